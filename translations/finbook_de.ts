@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="215"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="206"/>
         <source>The first key has no lines to carry.</source>
         <translation>Das erste Schlüsselbild hat keine Linien, die sich übertragen lassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="217"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="99"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
         <source>The second key has no lines to fit to.</source>
         <translation>Das zweite Schlüsselbild hat keine Linien, an die sich anpassen ließe.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="222"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="213"/>
         <source>The first key could not be meshed: %1</source>
         <translation>Das erste Schlüsselbild ließ sich nicht vernetzen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="254"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="245"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>Die Linien des ersten Schlüsselbilds sind Punkte: Es gibt nichts anzupassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="266"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="257"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>Das Netz des ersten Schlüsselbilds lässt sich nicht anpassen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="89"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="78"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>Die Linien des ersten Schlüsselbilds um (%1, %2), %3 × %4 px, finden im zweiten nichts Ähnliches.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="98"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="87"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>Die beiden Zeichnungen sind zu verschieden, um eine auf die andere anzupassen (im Median %1 % der Zeichnung entfernt, %2 % gedehnt).%3 Zeichnen Sie ein Schlüsselbild dazwischen oder das zweite näher am ersten.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="108"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>Ein Zuordnungspin liegt nicht auf der Zeichnung des ersten Schlüsselbilds.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="112"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="101"/>
         <source>The fit could not be solved.</source>
         <translation>Die Anpassung ließ sich nicht lösen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="127"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="116"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>Die angepasste Bewegung lässt sich nicht interpolieren: %1</translation>
     </message>
@@ -224,12 +224,12 @@
         <translation>Zwischenbilder erzeugen</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="91"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="92"/>
         <source>Reset Pose</source>
         <translation>Pose zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="175"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="183"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung anwenden</translation>
@@ -562,6 +562,11 @@
         <source>Make Drawing Independent</source>
         <translation>Zeichnung eigenständig machen</translation>
     </message>
+    <message>
+        <location filename="../model/src/picture/picture_commands.cpp" line="19"/>
+        <source>Import Picture</source>
+        <translation>Bild importieren</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -814,27 +819,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="76"/>
+        <location filename="../model/src/deform_setup.cpp" line="107"/>
         <source>The object has no strokes to deform.</source>
         <translation>Das Objekt hat keine Striche, die sich verformen ließen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="82"/>
+        <location filename="../model/src/deform_setup.cpp" line="114"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Für diese Zeichnung lässt sich kein Verformungsnetz erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="114"/>
+        <location filename="../model/src/deform_setup.cpp" line="146"/>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="159"/>
+        <location filename="../model/src/deform_setup.cpp" line="197"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>Der Käfig wurde geändert, während er vorbereitet wurde.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="167"/>
+        <location filename="../model/src/deform_setup.cpp" line="205"/>
         <source>The object has no mesh to deform.</source>
         <translation>Das Objekt hat kein Netz, das sich verformen ließe.</translation>
     </message>
@@ -849,17 +854,17 @@
         <translation>Die Pins konnten nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="190"/>
+        <location filename="../model/src/deform_setup.cpp" line="228"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>Die Verformung hat ungültige Punkte ergeben; sie wurde nicht angewendet.</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="34"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="35"/>
         <source>The cage cannot be used: %1</source>
         <translation>Der Käfig kann nicht verwendet werden: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/cage/cage_setup.cpp" line="40"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="41"/>
         <source>%n stroke point(s) lie outside the cage; move its corners out so it encloses the drawing.</source>
         <translation>
             <numerusform>%n Strichpunkt liegt außerhalb des Käfigs; ziehen Sie seine Ecken nach außen, damit er die Zeichnung umschließt.</numerusform>
@@ -867,44 +872,44 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="43"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="44"/>
         <source>The drawing cannot be bound to the cage: %1</source>
         <translation>Die Zeichnung kann nicht an den Käfig gebunden werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="58"/>
-        <location filename="../model/src/cage/cage_setup.cpp" line="61"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="59"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="62"/>
         <source>The cage could not be solved: %1</source>
         <translation>Der Käfig konnte nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="71"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="72"/>
         <source>This cage cannot be used: %1</source>
         <translation>Dieser Käfig kann nicht verwendet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="75"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="76"/>
         <source>The cage must enclose the whole object: %1</source>
         <translation>Der Käfig muss das ganze Objekt umschließen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="95"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="99"/>
         <source>No cage fits this drawing: %1</source>
         <translation>Kein Käfig passt zu dieser Zeichnung: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="41"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="42"/>
         <source>No skeleton can be built for this drawing: %1</source>
         <translation>Für diese Zeichnung lässt sich kein Skelett erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="54"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="55"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>Das Objekt hat keine Striche, in denen sich ein Skelett erstellen ließe.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="68"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="83"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="73"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="88"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>Für diese Zeichnung lässt sich kein Skelett erstellen.</translation>
     </message>
@@ -1604,351 +1609,361 @@
         <translation>Abschnitt %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="140"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="141"/>
         <source>the file&apos;s end is damaged</source>
         <translation>das Ende der Datei ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="146"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>ihre Länge (%1 Bytes) reicht über das Dateiende hinaus (%2 Bytes übrig), obwohl die Datei mit ihrer Endmarke endet; die Längenangabe ist also beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>die Datei endet mitten in diesem Abschnitt; sein vorhandener Inhalt wird gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
         <source>a section</source>
         <translation>ein Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>die Datei endet vor der Prüfsumme dieses Abschnitts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
         <source>a section checksum</source>
         <translation>eine Abschnittsprüfsumme</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>seine Prüfsumme stimmt nicht, seine Bytes wurden also nach dem Speichern verändert</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>the end marker</source>
         <translation>die Endmarke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="181"/>
         <source>the file</source>
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="216"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
         <source>a sound clip comes before the frames</source>
         <translation>ein Tonclip steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
         <source>the layers come before the frames</source>
         <translation>die Ebenen stehen vor den Einzelbildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="226"/>
         <source>the layers are repeated</source>
         <translation>die Ebenen kommen doppelt vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <source>the pictures come before the frames</source>
+        <translation>die Bilder stehen vor den Einzelbildern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
+        <source>the pictures are repeated</source>
+        <translation>die Bilder kommen doppelt vor</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the camera comes before the frames</source>
         <translation>die Kamera steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="236"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the camera is repeated</source>
         <translation>die Kamera kommt mehrfach vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
         <source>the swap sets come before the frames</source>
         <translation>die Austauschsätze stehen vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the swap sets are repeated</source>
         <translation>die Austauschsätze sind wiederholt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="267"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="278"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
         <source>the palette</source>
         <translation>die Palette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="317"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="379"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="391"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="320"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="333"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="343"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="344"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="336"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="354"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="357"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="347"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="352"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="364"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="356"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="368"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="358"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
         <source>the close-gap setting</source>
         <translation>die Einstellung zum Lückenschließen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="361"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="382"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="408"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="421"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="57"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="60"/>
         <source>the frame list</source>
         <translation>die Einzelbildliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="68"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="74"/>
         <source>a frame</source>
         <translation>ein Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>das Einzelbild ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>%1; the frame is left out</source>
         <translation>%1; das Einzelbild wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>a frame id</source>
         <translation>eine Einzelbild-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
         <source>the frame</source>
         <translation>das Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="91"/>
         <source>a frame hold</source>
         <translation>eine Haltedauer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>die Haltedauer %1 liegt nicht zwischen 1 und %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
         <source>the object list</source>
         <translation>die Objektliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="104"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="110"/>
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>das Objekt ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
         <source>%1; the object is left out</source>
         <translation>%1; das Objekt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
         <source>a chunk header</source>
         <translation>ein Blockkopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="231"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="232"/>
         <source>a chunk</source>
         <translation>ein Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="222"/>
         <source>chunk</source>
         <translation>Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>an object id</source>
         <translation>eine Objekt-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the object</source>
         <translation>das Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
         <source>the object flags</source>
         <translation>die Objektattribute</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="137"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>die Objektattribute 0x%1 sind unbekannt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="140"/>
         <source>the mesh density</source>
         <translation>die Netzdichte</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="142"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="143"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>die Netzdichte %1 ist keine Zahl von 0 bis 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="165"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="160"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="166"/>
         <source>the object name</source>
         <translation>der Objektname</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="163"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>der Objektname ist %1 Bytes lang (höchstens %2)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="174"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>der Objektname ist kein gültiger UTF-8-Text</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
         <source>the stroke list</source>
         <translation>die Strichliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
         <source>a stroke id</source>
         <translation>eine Strich-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="198"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
         <source>the stroke</source>
         <translation>der Strich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="340"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="341"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>seine Pose hat %n Strich, das Objekt aber %1</numerusform>
@@ -1956,7 +1971,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>Strich %1 hat %n Punkt, seine Pose aber %2</numerusform>
@@ -1964,142 +1979,142 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="189"/>
         <source>a stroke reference</source>
         <translation>ein Strichverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 gibt %2 Einträge an; die %3, die hineinpassen, werden gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="191"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="192"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>er verweist auf Strichdaten %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>an unknown chunk is left out</source>
         <translation>ein unbekannter Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="227"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>Block %1 kommt doppelt oder mit einem anderen Rig vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="236"/>
         <source>%1; the chunk is left out</source>
         <translation>%1; der Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
         <source>the skeleton&apos;s join</source>
         <translation>die Verbindung des Skeletts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="266"/>
         <source>a join comes without a skeleton</source>
         <translation>eine Verbindung steht ohne Skelett</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="273"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>die Verbindung des Skeletts ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
         <source>the pin list</source>
         <translation>die Pin-Liste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
         <source>a pin id</source>
         <translation>eine Pin-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="293"/>
         <source>pin %1</source>
         <translation>Pin %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="295"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="296"/>
         <source>a pin position</source>
         <translation>eine Pin-Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
         <source>pin %1 has a non-finite position</source>
         <translation>Pin %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
         <source>the cage corner list</source>
         <translation>die Käfigeckenliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>der Käfig hat weniger als 3 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
         <source>a cage corner</source>
         <translation>eine Käfigecke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="322"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>Käfigecke %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
         <source>a pose reference</source>
         <translation>ein Posenverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="333"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>seine Pose verweist auf Pose %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="337"/>
         <source>its pose: %1</source>
         <translation>seine Pose: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="360"/>
         <source>%1 has no id</source>
         <translation>%1 hat keine ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="361"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 hat die ID %2, die größer ist als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="368"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="369"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="449"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="454"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="467"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="459"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="472"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="468"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="481"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -2548,6 +2563,88 @@
         <source>%1; the swap sets are left out</source>
         <translation>%1; die Austauschsätze werden weggelassen</translation>
     </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="102"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="103"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="228"/>
+        <source>the pictures</source>
+        <translation>die Bilder</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="114"/>
+        <source>picture %1 is cut off</source>
+        <translation>Bild %1 ist abgeschnitten</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="119"/>
+        <source>picture %1&apos;s mesh has %2 vertices</source>
+        <translation>das Netz von Bild %1 hat %2 Ecken</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="128"/>
+        <source>picture %1&apos;s mesh has a vertex outside the picture</source>
+        <translation>das Netz von Bild %1 hat eine Ecke außerhalb des Bildes</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="135"/>
+        <source>picture %1&apos;s mesh has no triangles</source>
+        <translation>das Netz von Bild %1 hat keine Dreiecke</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="143"/>
+        <source>picture %1&apos;s mesh names a vertex it does not have</source>
+        <translation>das Netz von Bild %1 nennt eine Ecke, die es nicht hat</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="152"/>
+        <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
+        <translation>das Netz von Bild %1 hat ein umgeklapptes Dreieck oder eines ohne Fläche</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="163"/>
+        <source>picture %1 is %2 × %3 pixels: %4</source>
+        <translation>Bild %1 ist %2 × %3 Pixel groß: %4</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
+        <source>picture %1 does not decode: %2</source>
+        <translation>Bild %1 lässt sich nicht dekodieren: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="176"/>
+        <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
+        <translation>Bild %1 ist %2 × %3 Pixel groß, nicht %4 × %5 wie angegeben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="188"/>
+        <source>%1; the objects showing it are left without it</source>
+        <translation>%1; die Objekte, die es zeigen, bleiben ohne Bild</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="200"/>
+        <source>the object&apos;s picture</source>
+        <translation>das Bild des Objekts</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="205"/>
+        <source>the picture&apos;s place is out of range</source>
+        <translation>die Lage des Bildes liegt außerhalb des gültigen Bereichs</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="213"/>
+        <source>the picture&apos;s pose has a point out of range</source>
+        <translation>die Pose des Bildes hat einen Punkt außerhalb des gültigen Bereichs</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="236"/>
+        <source>an object shows picture %1, which the file does not hold</source>
+        <translation>ein Objekt zeigt Bild %1, das die Datei nicht enthält</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="262"/>
+        <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
+        <translation>die Pose eines Bildes passt nicht zu seinem Netz; es wird in Ruhe gezeigt</translation>
+    </message>
 </context>
 <context>
     <name>MeshImport</name>
@@ -2664,6 +2761,26 @@
 <context>
     <name>PictureImport</name>
     <message>
+        <location filename="../model/src/picture/openraster.cpp" line="127"/>
+        <source>Its stack.xml does not describe an OpenRaster image.</source>
+        <translation>Ihre stack.xml beschreibt kein OpenRaster-Bild.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="136"/>
+        <source>Its stack.xml gives a layer an invalid position or opacity.</source>
+        <translation>Ihre stack.xml gibt einer Ebene eine ungültige Lage oder Deckkraft.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="140"/>
+        <source>Its layer groups are nested too deeply.</source>
+        <translation>Ihre Ebenengruppen sind zu tief verschachtelt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="146"/>
+        <source>Its stack.xml names a layer without a picture.</source>
+        <translation>Ihre stack.xml nennt eine Ebene ohne Bild.</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/openraster.cpp" line="149"/>
         <source>It has more than %1 layers.</source>
         <translation>Sie hat mehr als %1 Ebenen.</translation>
@@ -2672,6 +2789,16 @@
         <location filename="../model/src/picture/openraster.cpp" line="156"/>
         <source>Its stack.xml is malformed (line %1: %2).</source>
         <translation>Ihre stack.xml ist fehlerhaft (Zeile %1: %2).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="161"/>
+        <source>Its stack.xml is empty.</source>
+        <translation>Ihre stack.xml ist leer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="163"/>
+        <source>Its stack of layers is empty.</source>
+        <translation>Ihr Ebenenstapel ist leer.</translation>
     </message>
     <message>
         <location filename="../model/src/picture/openraster.cpp" line="173"/>
@@ -2694,14 +2821,44 @@
         <translation>Ihre Ebene „%1“: %2</translation>
     </message>
     <message>
+        <location filename="../model/src/picture/openraster.cpp" line="211"/>
+        <source>It is a zip archive, but not an OpenRaster picture.</source>
+        <translation>Sie ist ein ZIP-Archiv, aber kein OpenRaster-Bild.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="232"/>
+        <source>It is not a zip archive, or it is damaged or cut short.</source>
+        <translation>Sie ist kein ZIP-Archiv, oder sie ist beschädigt oder unvollständig.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="238"/>
+        <source>It has no stack.xml: it is not an OpenRaster picture.</source>
+        <translation>Sie hat keine stack.xml: Sie ist kein OpenRaster-Bild.</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/openraster.cpp" line="241"/>
         <source>Its stack.xml is larger than %1 MB.</source>
         <translation>Ihre stack.xml ist größer als %1 MB.</translation>
     </message>
     <message>
+        <location filename="../model/src/picture/openraster.cpp" line="244"/>
+        <source>Its stack.xml is damaged or cut short.</source>
+        <translation>Ihre stack.xml ist beschädigt oder unvollständig.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="263"/>
+        <source>It has no visible layer.</source>
+        <translation>Sie hat keine sichtbare Ebene.</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/picture_decode.cpp" line="23"/>
         <source>“%1” cannot be imported: %2</source>
         <translation>„%1“ kann nicht importiert werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="30"/>
+        <source>Its picture has no size.</source>
+        <translation>Ihr Bild hat keine Größe.</translation>
     </message>
     <message>
         <location filename="../model/src/picture/picture_decode.cpp" line="32"/>
@@ -2719,10 +2876,87 @@
         <translation>Ihre Bilder würden zusammen mehr als %1 MB Speicher belegen.</translation>
     </message>
     <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="72"/>
+        <source>Its picture is cut short (the file is incomplete).</source>
+        <translation>Ihr Bild ist abgeschnitten (die Datei ist unvollständig).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="83"/>
+        <source>Its picture cannot be decoded: the file is damaged, cut short or too large.</source>
+        <translation>Ihr Bild lässt sich nicht dekodieren: Die Datei ist beschädigt, unvollständig oder zu groß.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="93"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="35"/>
+        <source>It is empty.</source>
+        <translation>Sie ist leer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="101"/>
+        <source>It holds a picture of a kind Finbook cannot read.</source>
+        <translation>Sie enthält ein Bild einer Art, die Finbook nicht lesen kann.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="108"/>
+        <source>Its picture cannot be decoded.</source>
+        <translation>Ihr Bild lässt sich nicht dekodieren.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="114"/>
+        <source>There is not enough memory to read it.</source>
+        <translation>Es ist nicht genug Speicher da, um sie zu lesen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_import.cpp" line="33"/>
+        <source>It cannot be read (is it there, and may Finbook read it?).</source>
+        <translation>Sie lässt sich nicht lesen (gibt es sie, und darf Finbook sie lesen?).</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/picture_import.cpp" line="44"/>
         <location filename="../model/src/picture/picture_import.cpp" line="48"/>
         <source>It is larger than %1 MB.</source>
         <translation>Sie ist größer als %1 MB.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="40"/>
+        <source>The picture is empty.</source>
+        <translation>Das Bild ist leer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="44"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="184"/>
+        <source>There is not enough memory for the picture.</source>
+        <translation>Für das Bild ist nicht genug Speicher da.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="49"/>
+        <source>The picture could not be encoded to be saved: %1</source>
+        <translation>Das Bild ließ sich zum Speichern nicht kodieren: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="64"/>
+        <source>The picture&apos;s outline cannot be traced: %1</source>
+        <translation>Der Umriss des Bildes lässt sich nicht nachzeichnen: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
+        <source>The picture is fully transparent: nothing of it shows.</source>
+        <translation>Das Bild ist ganz durchsichtig: Nichts davon ist zu sehen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="75"/>
+        <source>The picture&apos;s outline cannot be meshed: %1</source>
+        <translation>Der Umriss des Bildes lässt sich nicht vernetzen: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="169"/>
+        <source>The object has no picture.</source>
+        <translation>Das Objekt hat kein Bild.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="179"/>
+        <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
+        <translation>Das posierte Bild ist zu groß, um es zu behalten (höchstens %1 Pixel breit und hoch).</translation>
     </message>
 </context>
 <context>
@@ -3363,12 +3597,12 @@
 <context>
     <name>finbook::ui::BetweenFitView</name>
     <message>
-        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="37"/>
+        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="38"/>
         <source>Drag from a line of the first drawing to where it belongs on the second to pin it there; drag a pin to move it, right-click it to take it away.</source>
         <translation>Ziehen Sie von einer Linie der ersten Zeichnung dorthin, wo sie auf der zweiten hingehört, um sie dort festzupinnen; ziehen Sie einen Pin, um ihn zu verschieben, Rechtsklick entfernt ihn.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="141"/>
+        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="137"/>
         <source>No drawing to fit</source>
         <translation>Keine Zeichnung anzupassen</translation>
     </message>
@@ -4908,7 +5142,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window.cpp" line="353"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="278"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="322"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -4918,33 +5152,33 @@
         <translation>%1[*] – Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="29"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="33"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook-Animationen (*.finbook);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="40"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="44"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="75"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="79"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="134"/>
         <source>Cannot Open File</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="169"/>
         <source>Cannot Save File</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="175"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="141"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Lesbare Teile von %1 geöffnet (%n Problem behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
@@ -4952,74 +5186,98 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="93"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="102"/>
         <source>Cannot Open the Example</source>
         <translation>Das Beispiel lässt sich nicht öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="107"/>
         <source>The example walk cycle: change it and save it as your own.</source>
         <translation>Der Beispiel-Laufzyklus: ändere ihn und speichere ihn als deinen eigenen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="234"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
         <source>Cannot Import Mesh</source>
         <translation>Netz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="269"/>
+        <source>Reading &quot;%1&quot;...</source>
+        <translation>„%1“ wird gelesen …</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <source>Import Picture</source>
+        <translation>Bild importieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="282"/>
+        <source>Cannot Import Picture</source>
+        <translation>Bild kann nicht importiert werden</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
+        <source>Imported &quot;%1&quot;: %n picture object(s).</source>
+        <translation>
+            <numerusform>„%1“ importiert: %n Bildobjekt.</numerusform>
+            <numerusform>„%1“ importiert: %n Bildobjekte.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="310"/>
         <source>Damaged File</source>
         <translation>Beschädigte Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="311"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>„Trotzdem öffnen“ zeigt den noch lesbaren Inhalt als neue, ungespeicherte Animation an; die beschädigte Datei wird nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="270"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="314"/>
         <source>Open Anyway</source>
         <translation>Trotzdem öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="281"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="325"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>„%1“ hat ungespeicherte Änderungen. Vorher speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="287"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="331"/>
         <source>Open Animation</source>
         <translation>Animation öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="337"/>
         <source>Save Animation</source>
         <translation>Animation speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="338"/>
         <source>untitled.finbook</source>
         <translation>unbenannt.finbook</translation>
     </message>
@@ -5085,211 +5343,221 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_menus.cpp" line="119"/>
+        <source>Import &amp;Picture...</source>
+        <translation>Bil&amp;d importieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <source>Pictures (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster stacks (*.ora);;All files (*)</source>
+        <translation>Bilder (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster-Stapel (*.ora);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
         <source>Import Re&amp;ference...</source>
         <translation>&amp;Referenz importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
         <source>Cannot Import Reference</source>
         <translation>Referenz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="157"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="215"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="245"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>Rotate View &amp;Left</source>
         <translation>Ansicht nach &amp;links drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>Rotate View &amp;Right</source>
         <translation>Ansicht nach &amp;rechts drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>R&amp;eset View Rotation</source>
         <translation>Dre&amp;hung der Ansicht zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>Mirror Vie&amp;w</source>
         <translation>Ansicht sp&amp;iegeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="284"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="290"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="301"/>
         <source>&amp;Camera View</source>
         <translation>Kamera&amp;ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Andere Ebenen ab&amp;dunkeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="303"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="314"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="309"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="333"/>
         <source>&amp;Layer</source>
         <translation>Ebe&amp;ne</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="340"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="347"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="350"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="361"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="360"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="371"/>
         <source>Finbook &amp;Manual</source>
         <translation>Finbook-&amp;Handbuch</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="365"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="376"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="397"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="408"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="421"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="432"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="422"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="433"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -5314,13 +5582,13 @@
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>
@@ -5486,7 +5754,7 @@
     <name>finbook::ui::ManualBrowser</name>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="30"/>
-        <location filename="../ui/src/help/manual_browser.cpp" line="98"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="99"/>
         <source>Contents</source>
         <translation>Inhalt</translation>
     </message>
@@ -5542,51 +5810,56 @@
     </message>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
+        <source>Pictures as Objects</source>
+        <translation>Bilder als Objekte</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
         <source>Reference Pictures and Video</source>
         <translation>Referenzbilder und -videos</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
         <source>Exporting</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
         <source>Saving, Autosave and Recovery</source>
         <translation>Speichern, automatisches Speichern und Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
         <source>The Command Line</source>
         <translation>Die Befehlszeile</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="46"/>
         <source>Keyboard Shortcuts</source>
         <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="46"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="47"/>
         <source>Installing</source>
         <translation>Installieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="83"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="84"/>
         <source>Finbook Manual</source>
         <translation>Finbook-Handbuch</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
         <source>Back</source>
         <translation>Zurück</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="98"/>
         <source>Forward</source>
         <translation>Vor</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="103"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="104"/>
         <source>Search the manual</source>
         <translation>Im Handbuch suchen</translation>
     </message>

@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="215"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="206"/>
         <source>The first key has no lines to carry.</source>
         <translation>La première clé n’a aucune ligne à transporter.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="217"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="99"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
         <source>The second key has no lines to fit to.</source>
         <translation>La seconde clé n’a aucune ligne sur laquelle ajuster.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="222"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="213"/>
         <source>The first key could not be meshed: %1</source>
         <translation>La première clé n’a pas pu être maillée : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="254"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="245"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>Les lignes de la première clé sont des points : il n’y a rien à ajuster.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="266"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="257"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>Le maillage de la première clé ne peut pas être ajusté : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="89"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="78"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>Les lignes de la première clé autour de (%1, %2), %3 × %4 px, ne trouvent rien de semblable dans la seconde.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="98"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="87"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>Les deux dessins sont trop différents pour ajuster l’un sur l’autre (à %1 % du dessin en médiane, étiré de %2 %).%3 Dessinez une clé entre les deux, ou la seconde plus proche de la première.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="108"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>Une épingle de correspondance n’est pas sur le dessin de la première clé.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="112"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="101"/>
         <source>The fit could not be solved.</source>
         <translation>L’ajustement n’a pas pu être résolu.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="127"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="116"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>Le mouvement ajusté ne peut pas être interpolé : %1</translation>
     </message>
@@ -224,12 +224,12 @@
         <translation>Générer des intervalles</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="91"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="92"/>
         <source>Reset Pose</source>
         <translation>Réinitialiser la pose</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="175"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="183"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Appliquer la pose au dessin</translation>
@@ -562,6 +562,11 @@
         <source>Make Drawing Independent</source>
         <translation>Garder le dessin pour cette image</translation>
     </message>
+    <message>
+        <location filename="../model/src/picture/picture_commands.cpp" line="19"/>
+        <source>Import Picture</source>
+        <translation>Importer une image</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -814,27 +819,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="76"/>
+        <location filename="../model/src/deform_setup.cpp" line="107"/>
         <source>The object has no strokes to deform.</source>
         <translation>L&apos;objet n&apos;a aucun trait à déformer.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="82"/>
+        <location filename="../model/src/deform_setup.cpp" line="114"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Impossible de mailler ce dessin pour le déformer&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="114"/>
+        <location filename="../model/src/deform_setup.cpp" line="146"/>
         <source>Cancelled.</source>
         <translation>Annulé.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="159"/>
+        <location filename="../model/src/deform_setup.cpp" line="197"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>La cage a changé pendant sa préparation.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="167"/>
+        <location filename="../model/src/deform_setup.cpp" line="205"/>
         <source>The object has no mesh to deform.</source>
         <translation>L&apos;objet n&apos;a pas de maillage à déformer.</translation>
     </message>
@@ -849,17 +854,17 @@
         <translation>Le calcul de la déformation par les épingles a échoué&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="190"/>
+        <location filename="../model/src/deform_setup.cpp" line="228"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>La déformation a produit des points invalides&#xa0;; elle n&apos;a pas été appliquée.</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="34"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="35"/>
         <source>The cage cannot be used: %1</source>
         <translation>Impossible d&apos;utiliser la cage&#xa0;: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/cage/cage_setup.cpp" line="40"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="41"/>
         <source>%n stroke point(s) lie outside the cage; move its corners out so it encloses the drawing.</source>
         <translation>
             <numerusform>%n point de trait se trouve hors de la cage&#xa0;; écartez ses coins pour qu&apos;elle entoure le dessin.</numerusform>
@@ -867,44 +872,44 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="43"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="44"/>
         <source>The drawing cannot be bound to the cage: %1</source>
         <translation>Impossible de lier le dessin à la cage&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="58"/>
-        <location filename="../model/src/cage/cage_setup.cpp" line="61"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="59"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="62"/>
         <source>The cage could not be solved: %1</source>
         <translation>Impossible de résoudre la cage&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="71"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="72"/>
         <source>This cage cannot be used: %1</source>
         <translation>Cette cage est inutilisable&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="75"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="76"/>
         <source>The cage must enclose the whole object: %1</source>
         <translation>La cage doit entourer tout l&apos;objet&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="95"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="99"/>
         <source>No cage fits this drawing: %1</source>
         <translation>Aucune cage ne convient à ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="41"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="42"/>
         <source>No skeleton can be built for this drawing: %1</source>
         <translation>Impossible de construire un squelette pour ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="54"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="55"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>L&apos;objet n&apos;a aucun trait dans lequel construire un squelette.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="68"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="83"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="73"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="88"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>Impossible de construire un squelette pour ce dessin.</translation>
     </message>
@@ -1604,351 +1609,361 @@
         <translation>section %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="140"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="141"/>
         <source>the file&apos;s end is damaged</source>
         <translation>la fin du fichier est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="146"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>sa longueur (%1 octets) dépasse la fin du fichier (%2 octets restants), alors que le fichier se termine par sa marque de fin&#xa0;: la longueur est donc endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>le fichier s&apos;arrête au milieu de cette section (%1 octets annoncés, %2 restants)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>le fichier s&apos;arrête au milieu de cette section&#xa0;; ce qu&apos;elle contient est lu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
         <source>a section</source>
         <translation>une section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>le fichier s&apos;arrête avant la somme de contrôle de cette section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
         <source>a section checksum</source>
         <translation>une somme de contrôle de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>sa somme de contrôle ne correspond pas, ses octets ont donc changé après l&apos;enregistrement</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>the end marker</source>
         <translation>le marqueur de fin</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="181"/>
         <source>the file</source>
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="216"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
         <source>a sound clip comes before the frames</source>
         <translation>un extrait sonore précède les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
         <source>the layers come before the frames</source>
         <translation>les calques viennent avant les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="226"/>
         <source>the layers are repeated</source>
         <translation>les calques sont répétés</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <source>the pictures come before the frames</source>
+        <translation>les images viennent avant les dessins</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
+        <source>the pictures are repeated</source>
+        <translation>les images sont répétées</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the camera comes before the frames</source>
         <translation>la caméra vient avant les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="236"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the camera is repeated</source>
         <translation>la caméra est répétée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
         <source>the swap sets come before the frames</source>
         <translation>les jeux de dessins précèdent les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the swap sets are repeated</source>
         <translation>les jeux de dessins sont répétés</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="267"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="278"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
         <source>the palette</source>
         <translation>la palette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="317"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="379"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="391"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="320"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="333"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="343"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="344"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="336"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="354"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="357"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="347"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="352"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="364"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="356"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="368"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="358"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
         <source>the close-gap setting</source>
         <translation>le réglage de fermeture des trous</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="361"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="382"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="408"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="421"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="57"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="60"/>
         <source>the frame list</source>
         <translation>la liste des images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="68"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="74"/>
         <source>a frame</source>
         <translation>une image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>l&apos;image est tronquée et est ignorée, ainsi que toutes celles qui la suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>%1; the frame is left out</source>
         <translation>%1&#xa0;; l&apos;image est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>a frame id</source>
         <translation>un identifiant d&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
         <source>the frame</source>
         <translation>l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="91"/>
         <source>a frame hold</source>
         <translation>une durée d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>la durée d&apos;exposition %1 n&apos;est pas comprise entre 1 et %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
         <source>the object list</source>
         <translation>la liste des objets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="104"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="110"/>
         <source>an object</source>
         <translation>un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>l&apos;objet est tronqué et est ignoré, ainsi que tous ceux qui le suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
         <source>%1; the object is left out</source>
         <translation>%1&#xa0;; l&apos;objet est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
         <source>a chunk header</source>
         <translation>un en-tête de bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="231"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="232"/>
         <source>a chunk</source>
         <translation>un bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="222"/>
         <source>chunk</source>
         <translation>bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>an object id</source>
         <translation>un identifiant d&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the object</source>
         <translation>l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
         <source>the object flags</source>
         <translation>les attributs de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="137"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>les attributs d&apos;objet 0x%1 sont inconnus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="140"/>
         <source>the mesh density</source>
         <translation>la densité du maillage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="142"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="143"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>la densité du maillage %1 n&apos;est pas un nombre compris entre 0 et 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="165"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="160"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="166"/>
         <source>the object name</source>
         <translation>le nom de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="163"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>le nom de l&apos;objet fait %1 octets (%2 au maximum)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="174"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>le nom de l&apos;objet n&apos;est pas un texte UTF-8 valide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
         <source>the stroke list</source>
         <translation>la liste des traits</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
         <source>a stroke id</source>
         <translation>un identifiant de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="198"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
         <source>the stroke</source>
         <translation>le trait</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="340"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="341"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>sa pose a %n trait, mais l&apos;objet en a %1</numerusform>
@@ -1956,7 +1971,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>le trait %1 a %n point, mais sa pose en a %2</numerusform>
@@ -1964,142 +1979,142 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="189"/>
         <source>a stroke reference</source>
         <translation>une référence de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 annonce %2 entrées&#xa0;; seules les %3 qui tiennent dans le fichier sont lues</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="191"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="192"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>il renvoie aux données de trait %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>an unknown chunk is left out</source>
         <translation>un bloc inconnu est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="227"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>le bloc %1 apparaît deux fois ou avec une autre armature</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="236"/>
         <source>%1; the chunk is left out</source>
         <translation>%1&#xa0;; le bloc est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
         <source>the skeleton&apos;s join</source>
         <translation>la jonction du squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="266"/>
         <source>a join comes without a skeleton</source>
         <translation>une jonction est présente sans squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="273"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>la jonction du squelette est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
         <source>the pin list</source>
         <translation>la liste des épingles</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
         <source>a pin id</source>
         <translation>un identifiant d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="293"/>
         <source>pin %1</source>
         <translation>l&apos;épingle %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="295"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="296"/>
         <source>a pin position</source>
         <translation>une position d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
         <source>pin %1 has a non-finite position</source>
         <translation>l&apos;épingle %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
         <source>the cage corner list</source>
         <translation>la liste des coins de la cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>la cage a moins de 3 coins</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
         <source>a cage corner</source>
         <translation>un coin de cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="322"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>le coin de cage %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
         <source>a pose reference</source>
         <translation>une référence de pose</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="333"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>sa pose renvoie à la pose %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="337"/>
         <source>its pose: %1</source>
         <translation>sa pose&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="360"/>
         <source>%1 has no id</source>
         <translation>%1 n&apos;a pas d&apos;identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="361"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 a l&apos;identifiant %2, qui dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="368"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="369"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="449"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="454"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="467"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="459"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="472"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="468"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="481"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -2548,6 +2563,88 @@
         <source>%1; the swap sets are left out</source>
         <translation>%1 ; les jeux de dessins sont laissés de côté</translation>
     </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="102"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="103"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="228"/>
+        <source>the pictures</source>
+        <translation>les images</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="114"/>
+        <source>picture %1 is cut off</source>
+        <translation>l’image %1 est tronquée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="119"/>
+        <source>picture %1&apos;s mesh has %2 vertices</source>
+        <translation>le maillage de l’image %1 a %2 sommets</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="128"/>
+        <source>picture %1&apos;s mesh has a vertex outside the picture</source>
+        <translation>le maillage de l’image %1 a un sommet hors de l’image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="135"/>
+        <source>picture %1&apos;s mesh has no triangles</source>
+        <translation>le maillage de l’image %1 n’a pas de triangle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="143"/>
+        <source>picture %1&apos;s mesh names a vertex it does not have</source>
+        <translation>le maillage de l’image %1 désigne un sommet qu’il n’a pas</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="152"/>
+        <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
+        <translation>le maillage de l’image %1 a un triangle retourné ou sans aire</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="163"/>
+        <source>picture %1 is %2 × %3 pixels: %4</source>
+        <translation>l’image %1 fait %2 × %3 pixels : %4</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
+        <source>picture %1 does not decode: %2</source>
+        <translation>l’image %1 ne se décode pas : %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="176"/>
+        <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
+        <translation>l’image %1 fait %2 × %3 pixels, et non les %4 × %5 annoncés</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="188"/>
+        <source>%1; the objects showing it are left without it</source>
+        <translation>%1 ; les objets qui la montrent restent sans elle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="200"/>
+        <source>the object&apos;s picture</source>
+        <translation>l’image de l’objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="205"/>
+        <source>the picture&apos;s place is out of range</source>
+        <translation>la position de l’image est hors limites</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="213"/>
+        <source>the picture&apos;s pose has a point out of range</source>
+        <translation>la pose de l’image a un point hors limites</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="236"/>
+        <source>an object shows picture %1, which the file does not hold</source>
+        <translation>un objet montre l’image %1, que le fichier ne contient pas</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="262"/>
+        <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
+        <translation>la pose d’une image ne correspond pas à son maillage ; elle est montrée au repos</translation>
+    </message>
 </context>
 <context>
     <name>MeshImport</name>
@@ -2664,6 +2761,26 @@
 <context>
     <name>PictureImport</name>
     <message>
+        <location filename="../model/src/picture/openraster.cpp" line="127"/>
+        <source>Its stack.xml does not describe an OpenRaster image.</source>
+        <translation>Son stack.xml ne décrit pas une image OpenRaster.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="136"/>
+        <source>Its stack.xml gives a layer an invalid position or opacity.</source>
+        <translation>Son stack.xml donne à un calque une position ou une opacité invalide.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="140"/>
+        <source>Its layer groups are nested too deeply.</source>
+        <translation>Ses groupes de calques sont imbriqués trop profondément.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="146"/>
+        <source>Its stack.xml names a layer without a picture.</source>
+        <translation>Son stack.xml nomme un calque sans image.</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/openraster.cpp" line="149"/>
         <source>It has more than %1 layers.</source>
         <translation>Il a plus de %1 calques.</translation>
@@ -2672,6 +2789,16 @@
         <location filename="../model/src/picture/openraster.cpp" line="156"/>
         <source>Its stack.xml is malformed (line %1: %2).</source>
         <translation>Son stack.xml est mal formé (ligne %1 : %2).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="161"/>
+        <source>Its stack.xml is empty.</source>
+        <translation>Son stack.xml est vide.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="163"/>
+        <source>Its stack of layers is empty.</source>
+        <translation>Sa pile de calques est vide.</translation>
     </message>
     <message>
         <location filename="../model/src/picture/openraster.cpp" line="173"/>
@@ -2694,14 +2821,44 @@
         <translation>Son calque « %1 » : %2</translation>
     </message>
     <message>
+        <location filename="../model/src/picture/openraster.cpp" line="211"/>
+        <source>It is a zip archive, but not an OpenRaster picture.</source>
+        <translation>C’est une archive zip, mais pas une image OpenRaster.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="232"/>
+        <source>It is not a zip archive, or it is damaged or cut short.</source>
+        <translation>Ce n’est pas une archive zip, ou elle est endommagée ou tronquée.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="238"/>
+        <source>It has no stack.xml: it is not an OpenRaster picture.</source>
+        <translation>Elle n’a pas de stack.xml : ce n’est pas une image OpenRaster.</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/openraster.cpp" line="241"/>
         <source>Its stack.xml is larger than %1 MB.</source>
         <translation>Son stack.xml dépasse %1 Mo.</translation>
     </message>
     <message>
+        <location filename="../model/src/picture/openraster.cpp" line="244"/>
+        <source>Its stack.xml is damaged or cut short.</source>
+        <translation>Son stack.xml est endommagé ou tronqué.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="263"/>
+        <source>It has no visible layer.</source>
+        <translation>Elle n’a aucun calque visible.</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/picture_decode.cpp" line="23"/>
         <source>“%1” cannot be imported: %2</source>
         <translation>« %1 » ne peut pas être importé : %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="30"/>
+        <source>Its picture has no size.</source>
+        <translation>Son image n’a pas de taille.</translation>
     </message>
     <message>
         <location filename="../model/src/picture/picture_decode.cpp" line="32"/>
@@ -2719,10 +2876,87 @@
         <translation>Ses images prendraient ensemble plus de %1 Mo de mémoire.</translation>
     </message>
     <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="72"/>
+        <source>Its picture is cut short (the file is incomplete).</source>
+        <translation>Son image est tronquée (le fichier est incomplet).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="83"/>
+        <source>Its picture cannot be decoded: the file is damaged, cut short or too large.</source>
+        <translation>Son image ne peut pas être décodée : le fichier est endommagé, tronqué ou trop grand.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="93"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="35"/>
+        <source>It is empty.</source>
+        <translation>Il est vide.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="101"/>
+        <source>It holds a picture of a kind Finbook cannot read.</source>
+        <translation>Il contient une image d’un type que Finbook ne sait pas lire.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="108"/>
+        <source>Its picture cannot be decoded.</source>
+        <translation>Son image ne peut pas être décodée.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="114"/>
+        <source>There is not enough memory to read it.</source>
+        <translation>Il n’y a pas assez de mémoire pour le lire.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_import.cpp" line="33"/>
+        <source>It cannot be read (is it there, and may Finbook read it?).</source>
+        <translation>Il ne peut pas être lu (existe-t-il, et Finbook a-t-il le droit de le lire ?).</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/picture_import.cpp" line="44"/>
         <location filename="../model/src/picture/picture_import.cpp" line="48"/>
         <source>It is larger than %1 MB.</source>
         <translation>Il dépasse %1 Mo.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="40"/>
+        <source>The picture is empty.</source>
+        <translation>L’image est vide.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="44"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="184"/>
+        <source>There is not enough memory for the picture.</source>
+        <translation>Il n’y a pas assez de mémoire pour l’image.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="49"/>
+        <source>The picture could not be encoded to be saved: %1</source>
+        <translation>L’image n’a pas pu être encodée pour être enregistrée : %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="64"/>
+        <source>The picture&apos;s outline cannot be traced: %1</source>
+        <translation>Le contour de l’image ne peut pas être tracé : %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
+        <source>The picture is fully transparent: nothing of it shows.</source>
+        <translation>L’image est entièrement transparente : rien n’en paraît.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="75"/>
+        <source>The picture&apos;s outline cannot be meshed: %1</source>
+        <translation>Le contour de l’image ne peut pas être maillé : %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="169"/>
+        <source>The object has no picture.</source>
+        <translation>L’objet n’a pas d’image.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="179"/>
+        <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
+        <translation>L’image posée est trop grande pour être gardée (au plus %1 pixels de large et de haut).</translation>
     </message>
 </context>
 <context>
@@ -3363,12 +3597,12 @@
 <context>
     <name>finbook::ui::BetweenFitView</name>
     <message>
-        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="37"/>
+        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="38"/>
         <source>Drag from a line of the first drawing to where it belongs on the second to pin it there; drag a pin to move it, right-click it to take it away.</source>
         <translation>Faites glisser d’une ligne du premier dessin jusqu’à sa place sur le second pour l’y épingler ; faites glisser une épingle pour la déplacer, clic droit pour la retirer.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="141"/>
+        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="137"/>
         <source>No drawing to fit</source>
         <translation>Aucun dessin à ajuster</translation>
     </message>
@@ -4908,7 +5142,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window.cpp" line="353"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="278"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="322"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
@@ -4938,33 +5172,33 @@
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="29"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="33"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Animations Finbook (*.finbook);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="40"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="44"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="75"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="79"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="134"/>
         <source>Cannot Open File</source>
         <translation>Impossible d&apos;ouvrir le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="169"/>
         <source>Cannot Save File</source>
         <translation>Impossible d&apos;enregistrer le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="175"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="141"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Ce qui était lisible de %1 a été ouvert (%n problème réparé)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
@@ -4972,74 +5206,98 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="93"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="102"/>
         <source>Cannot Open the Example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="107"/>
         <source>The example walk cycle: change it and save it as your own.</source>
         <translation>L&apos;exemple de cycle de marche : modifiez-le et enregistrez-le comme le vôtre.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="234"/>
         <source>No recent files</source>
         <translation>Aucun fichier récent</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
         <source>Cannot Import Mesh</source>
         <translation>Impossible d&apos;importer le maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="269"/>
+        <source>Reading &quot;%1&quot;...</source>
+        <translation>Lecture de « %1 »…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <source>Import Picture</source>
+        <translation>Importer une image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="282"/>
+        <source>Cannot Import Picture</source>
+        <translation>Impossible d’importer l’image</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
+        <source>Imported &quot;%1&quot;: %n picture object(s).</source>
+        <translation>
+            <numerusform>« %1 » importé : %n objet image.</numerusform>
+            <numerusform>« %1 » importé : %n objets image.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="310"/>
         <source>Damaged File</source>
         <translation>Fichier endommagé</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="311"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>«&#xa0;Ouvrir quand même&#xa0;» affiche ce qui reste lisible dans une nouvelle animation non enregistrée&#xa0;; le fichier endommagé n&apos;est pas modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="270"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="314"/>
         <source>Open Anyway</source>
         <translation>Ouvrir quand même</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
         <source>Unsaved Changes</source>
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="281"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="325"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>«&#xa0;%1&#xa0;» contient des modifications non enregistrées. Les enregistrer avant de continuer&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="287"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="331"/>
         <source>Open Animation</source>
         <translation>Ouvrir une animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="337"/>
         <source>Save Animation</source>
         <translation>Enregistrer l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="338"/>
         <source>untitled.finbook</source>
         <translation>sans-titre.finbook</translation>
     </message>
@@ -5105,222 +5363,232 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_menus.cpp" line="119"/>
+        <source>Import &amp;Picture...</source>
+        <translation>Importer une ima&amp;ge...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <source>Pictures (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster stacks (*.ora);;All files (*)</source>
+        <translation>Images (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;Piles OpenRaster (*.ora);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
         <source>Import Re&amp;ference...</source>
         <translation>Importer une ré&amp;férence...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
         <source>Cannot Import Reference</source>
         <translation>Impossible d’importer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="157"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="215"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="245"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>Rotate View &amp;Left</source>
         <translation>Tourner la vue à &amp;gauche</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>Rotate View &amp;Right</source>
         <translation>Tourner la vue à &amp;droite</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>R&amp;eset View Rotation</source>
         <translation>Ré&amp;initialiser la rotation de la vue</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>Mirror Vie&amp;w</source>
         <translation>Vue en mir&amp;oir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="284"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="290"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="301"/>
         <source>&amp;Camera View</source>
         <translation>Vue &amp;caméra</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Atténuer les a&amp;utres calques</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="303"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="314"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="309"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="333"/>
         <source>&amp;Layer</source>
         <translation>&amp;Calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="340"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="347"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="350"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="361"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="360"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="371"/>
         <source>Finbook &amp;Manual</source>
         <translation>&amp;Manuel de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="365"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="376"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="397"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="408"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="421"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="432"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="422"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="433"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Rétablir</translation>
@@ -5486,7 +5754,7 @@
     <name>finbook::ui::ManualBrowser</name>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="30"/>
-        <location filename="../ui/src/help/manual_browser.cpp" line="98"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="99"/>
         <source>Contents</source>
         <translation>Sommaire</translation>
     </message>
@@ -5542,51 +5810,56 @@
     </message>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
+        <source>Pictures as Objects</source>
+        <translation>Les images comme objets</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
         <source>Reference Pictures and Video</source>
         <translation>Images et vidéos de référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
         <source>Exporting</source>
         <translation>Exporter</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
         <source>Saving, Autosave and Recovery</source>
         <translation>Enregistrement, sauvegarde automatique et récupération</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
         <source>The Command Line</source>
         <translation>La ligne de commande</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="46"/>
         <source>Keyboard Shortcuts</source>
         <translation>Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="46"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="47"/>
         <source>Installing</source>
         <translation>Installation</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="83"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="84"/>
         <source>Finbook Manual</source>
         <translation>Manuel de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
         <source>Back</source>
         <translation>Précédent</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="98"/>
         <source>Forward</source>
         <translation>Suivant</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="103"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="104"/>
         <source>Search the manual</source>
         <translation>Chercher dans le manuel</translation>
     </message>

@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="215"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="206"/>
         <source>The first key has no lines to carry.</source>
         <translation>最初のキーには運ぶ線がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="217"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="99"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
         <source>The second key has no lines to fit to.</source>
         <translation>二番目のキーには合わせる線がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="222"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="213"/>
         <source>The first key could not be meshed: %1</source>
         <translation>最初のキーをメッシュにできませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="254"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="245"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>最初のキーの線は点だけです。合わせるものがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="266"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="257"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>最初のキーのメッシュを合わせられません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="89"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="78"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>最初のキーの (%1, %2) 付近、%3 × %4 px の線に似たものが二番目のキーにありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="98"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="87"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>二つの絵が違いすぎて、一方を他方に合わせられません (中央値で絵の %1 % 離れ、%2 % 伸びています)。%3 間にキーを描くか、二番目を最初に近づけて描いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="108"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>対応ピンが最初のキーの絵の上にありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="112"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="101"/>
         <source>The fit could not be solved.</source>
         <translation>合わせ込みを解けませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="127"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="116"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>合わせた動きを補間できません: %1</translation>
     </message>
@@ -224,12 +224,12 @@
         <translation>中割りを生成</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="91"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="92"/>
         <source>Reset Pose</source>
         <translation>ポーズをリセット</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="175"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="183"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>ポーズを絵に適用</translation>
@@ -562,6 +562,11 @@
         <source>Make Drawing Independent</source>
         <translation>絵を独立させる</translation>
     </message>
+    <message>
+        <location filename="../model/src/picture/picture_commands.cpp" line="19"/>
+        <source>Import Picture</source>
+        <translation>画像を読み込む</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -814,27 +819,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="76"/>
+        <location filename="../model/src/deform_setup.cpp" line="107"/>
         <source>The object has no strokes to deform.</source>
         <translation>このオブジェクトには変形できるストロークがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="82"/>
+        <location filename="../model/src/deform_setup.cpp" line="114"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>この絵から変形用のメッシュを作成できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="114"/>
+        <location filename="../model/src/deform_setup.cpp" line="146"/>
         <source>Cancelled.</source>
         <translation>キャンセルしました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="159"/>
+        <location filename="../model/src/deform_setup.cpp" line="197"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>準備中にケージが変更されました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="167"/>
+        <location filename="../model/src/deform_setup.cpp" line="205"/>
         <source>The object has no mesh to deform.</source>
         <translation>このオブジェクトには変形できるメッシュがありません。</translation>
     </message>
@@ -849,61 +854,61 @@
         <translation>ピンによる変形を計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="190"/>
+        <location filename="../model/src/deform_setup.cpp" line="228"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>変形によって無効な点が生じたため、適用しませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="34"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="35"/>
         <source>The cage cannot be used: %1</source>
         <translation>ケージを使用できません: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/cage/cage_setup.cpp" line="40"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="41"/>
         <source>%n stroke point(s) lie outside the cage; move its corners out so it encloses the drawing.</source>
         <translation>
             <numerusform>%n 個のストロークの点がケージの外にあります。絵を囲むように、ケージの頂点を外側へ動かしてください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="43"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="44"/>
         <source>The drawing cannot be bound to the cage: %1</source>
         <translation>この絵をケージにバインドできません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="58"/>
-        <location filename="../model/src/cage/cage_setup.cpp" line="61"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="59"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="62"/>
         <source>The cage could not be solved: %1</source>
         <translation>ケージによる変形を計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="71"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="72"/>
         <source>This cage cannot be used: %1</source>
         <translation>このケージは使用できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="75"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="76"/>
         <source>The cage must enclose the whole object: %1</source>
         <translation>ケージはオブジェクト全体を囲む必要があります: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="95"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="99"/>
         <source>No cage fits this drawing: %1</source>
         <translation>この絵に合うケージがありません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="41"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="42"/>
         <source>No skeleton can be built for this drawing: %1</source>
         <translation>この絵にはスケルトンを作成できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="54"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="55"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>このオブジェクトにはスケルトンを作成するためのストロークがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="68"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="83"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="73"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="88"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>この絵にはスケルトンを作成できません。</translation>
     </message>
@@ -1599,500 +1604,510 @@
         <translation>セクション %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="140"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="141"/>
         <source>the file&apos;s end is damaged</source>
         <translation>ファイルの終端が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="146"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>長さ（%1 バイト）がファイルの終わりを超えています（残り %2 バイト）が、ファイルは終端マーカーで終わっています。長さの値が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>このセクションの途中でファイルが終わっています（%1 バイトのはずですが、残りは %2 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>このセクションの途中でファイルが終わっています。含まれている分は読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
         <source>a section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>このセクションのチェックサムの前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
         <source>a section checksum</source>
         <translation>セクションのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>チェックサムが一致しないため、保存後に内容が変更されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>the end marker</source>
         <translation>終端マーカー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="181"/>
         <source>the file</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="216"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
         <source>a sound clip comes before the frames</source>
         <translation>サウンドクリップがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
         <source>the layers come before the frames</source>
         <translation>レイヤーがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="226"/>
         <source>the layers are repeated</source>
         <translation>レイヤーが繰り返されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <source>the pictures come before the frames</source>
+        <translation>画像がフレームより前にあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
+        <source>the pictures are repeated</source>
+        <translation>画像が重複しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the camera comes before the frames</source>
         <translation>カメラがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="236"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the camera is repeated</source>
         <translation>カメラが重複しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
         <source>the swap sets come before the frames</source>
         <translation>差し替えセットがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the swap sets are repeated</source>
         <translation>差し替えセットが重複しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="267"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="278"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
         <source>the palette</source>
         <translation>パレット</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="317"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="379"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="391"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="320"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="333"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="343"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="344"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="336"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="354"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="357"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="347"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="352"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="364"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="356"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="368"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="358"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="361"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="382"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="408"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="421"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="57"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="60"/>
         <source>the frame list</source>
         <translation>フレーム一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="68"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="74"/>
         <source>a frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>フレームが途中で切れているため、以降のフレームとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>%1; the frame is left out</source>
         <translation>%1。このフレームは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>a frame id</source>
         <translation>フレーム ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
         <source>the frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="91"/>
         <source>a frame hold</source>
         <translation>フレームの表示時間</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>表示時間 %1 が 1～%2 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
         <source>the object list</source>
         <translation>オブジェクト一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="104"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="110"/>
         <source>an object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>オブジェクトが途中で切れているため、以降のオブジェクトとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
         <source>%1; the object is left out</source>
         <translation>%1。このオブジェクトは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
         <source>a chunk header</source>
         <translation>チャンクヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="231"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="232"/>
         <source>a chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="222"/>
         <source>chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>an object id</source>
         <translation>オブジェクト ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
         <source>the object flags</source>
         <translation>オブジェクトのフラグ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="137"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>オブジェクトのフラグ 0x%1 は不明です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="140"/>
         <source>the mesh density</source>
         <translation>メッシュ密度</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="142"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="143"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>メッシュ密度 %1 が 0～1000 の数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="165"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="160"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="166"/>
         <source>the object name</source>
         <translation>オブジェクト名</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="163"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>オブジェクト名が %1 バイトあります（最大 %2 バイト）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="174"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>オブジェクト名が有効な UTF-8 テキストではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
         <source>the stroke list</source>
         <translation>ストローク一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
         <source>a stroke id</source>
         <translation>ストローク ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="198"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
         <source>the stroke</source>
         <translation>ストローク</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="340"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="341"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>ポーズのストローク数は %n ですが、オブジェクトのストローク数は %1 です</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>ストローク %1 の点の数は %n ですが、ポーズでは %2 です</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="189"/>
         <source>a stroke reference</source>
         <translation>ストロークの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 には %2 個の項目があるはずですが、収まっている %3 個を読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="191"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="192"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>ストロークデータ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>an unknown chunk is left out</source>
         <translation>不明なチャンクを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="227"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>チャンク %1 が 2 回、または別のリグと一緒に現れます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="236"/>
         <source>%1; the chunk is left out</source>
         <translation>%1。このチャンクは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
         <source>the skeleton&apos;s join</source>
         <translation>スケルトンの接続</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="266"/>
         <source>a join comes without a skeleton</source>
         <translation>スケルトンのない接続があります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="273"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>スケルトンの接続が壊れています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
         <source>the pin list</source>
         <translation>ピン一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
         <source>a pin id</source>
         <translation>ピン ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="293"/>
         <source>pin %1</source>
         <translation>ピン %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="295"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="296"/>
         <source>a pin position</source>
         <translation>ピンの位置</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
         <source>pin %1 has a non-finite position</source>
         <translation>ピン %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
         <source>the cage corner list</source>
         <translation>ケージの頂点一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>ケージの頂点が 3 個未満です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
         <source>a cage corner</source>
         <translation>ケージの頂点</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="322"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>ケージの頂点 %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
         <source>a pose reference</source>
         <translation>ポーズの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="333"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>ポーズがポーズ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="337"/>
         <source>its pose: %1</source>
         <translation>ポーズ: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="360"/>
         <source>%1 has no id</source>
         <translation>%1 に ID がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="361"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 の ID %2 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="368"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="369"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="449"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="454"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="467"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="459"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="472"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="468"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="481"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -2539,6 +2554,88 @@
         <source>%1; the swap sets are left out</source>
         <translation>%1。差し替えセットは読み込みません</translation>
     </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="102"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="103"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="228"/>
+        <source>the pictures</source>
+        <translation>画像</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="114"/>
+        <source>picture %1 is cut off</source>
+        <translation>画像 %1 が途中で切れています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="119"/>
+        <source>picture %1&apos;s mesh has %2 vertices</source>
+        <translation>画像 %1 のメッシュの頂点数が %2 です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="128"/>
+        <source>picture %1&apos;s mesh has a vertex outside the picture</source>
+        <translation>画像 %1 のメッシュに画像の外の頂点があります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="135"/>
+        <source>picture %1&apos;s mesh has no triangles</source>
+        <translation>画像 %1 のメッシュに三角形がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="143"/>
+        <source>picture %1&apos;s mesh names a vertex it does not have</source>
+        <translation>画像 %1 のメッシュが存在しない頂点を参照しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="152"/>
+        <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
+        <translation>画像 %1 のメッシュに裏返った三角形か面積のない三角形があります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="163"/>
+        <source>picture %1 is %2 × %3 pixels: %4</source>
+        <translation>画像 %1 は %2 × %3 ピクセルです：%4</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
+        <source>picture %1 does not decode: %2</source>
+        <translation>画像 %1 をデコードできません：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="176"/>
+        <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
+        <translation>画像 %1 は %2 × %3 ピクセルで、記載の %4 × %5 ではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="188"/>
+        <source>%1; the objects showing it are left without it</source>
+        <translation>%1。この画像を表示するオブジェクトは画像なしで開きます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="200"/>
+        <source>the object&apos;s picture</source>
+        <translation>オブジェクトの画像</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="205"/>
+        <source>the picture&apos;s place is out of range</source>
+        <translation>画像の位置が範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="213"/>
+        <source>the picture&apos;s pose has a point out of range</source>
+        <translation>画像のポーズに範囲外の点があります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="236"/>
+        <source>an object shows picture %1, which the file does not hold</source>
+        <translation>オブジェクトがファイルにない画像 %1 を表示しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_section.cpp" line="262"/>
+        <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
+        <translation>画像のポーズがメッシュと合いません。レストの状態で表示します</translation>
+    </message>
 </context>
 <context>
     <name>MeshImport</name>
@@ -2654,6 +2751,26 @@
 <context>
     <name>PictureImport</name>
     <message>
+        <location filename="../model/src/picture/openraster.cpp" line="127"/>
+        <source>Its stack.xml does not describe an OpenRaster image.</source>
+        <translation>stack.xml が OpenRaster 画像を記述していません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="136"/>
+        <source>Its stack.xml gives a layer an invalid position or opacity.</source>
+        <translation>stack.xml でレイヤーの位置か不透明度が不正です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="140"/>
+        <source>Its layer groups are nested too deeply.</source>
+        <translation>レイヤーグループの入れ子が深すぎます。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="146"/>
+        <source>Its stack.xml names a layer without a picture.</source>
+        <translation>stack.xml に画像のないレイヤーがあります。</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/openraster.cpp" line="149"/>
         <source>It has more than %1 layers.</source>
         <translation>レイヤーが %1 を超えています。</translation>
@@ -2662,6 +2779,16 @@
         <location filename="../model/src/picture/openraster.cpp" line="156"/>
         <source>Its stack.xml is malformed (line %1: %2).</source>
         <translation>stack.xml の形式が正しくありません（%1 行目: %2）。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="161"/>
+        <source>Its stack.xml is empty.</source>
+        <translation>stack.xml が空です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="163"/>
+        <source>Its stack of layers is empty.</source>
+        <translation>レイヤーのスタックが空です。</translation>
     </message>
     <message>
         <location filename="../model/src/picture/openraster.cpp" line="173"/>
@@ -2684,14 +2811,44 @@
         <translation>レイヤー「%1」: %2</translation>
     </message>
     <message>
+        <location filename="../model/src/picture/openraster.cpp" line="211"/>
+        <source>It is a zip archive, but not an OpenRaster picture.</source>
+        <translation>zip アーカイブですが、OpenRaster 画像ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="232"/>
+        <source>It is not a zip archive, or it is damaged or cut short.</source>
+        <translation>zip アーカイブではないか、破損しているか途中で切れています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="238"/>
+        <source>It has no stack.xml: it is not an OpenRaster picture.</source>
+        <translation>stack.xml がありません。OpenRaster 画像ではありません。</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/openraster.cpp" line="241"/>
         <source>Its stack.xml is larger than %1 MB.</source>
         <translation>stack.xml が %1 MB を超えています。</translation>
     </message>
     <message>
+        <location filename="../model/src/picture/openraster.cpp" line="244"/>
+        <source>Its stack.xml is damaged or cut short.</source>
+        <translation>stack.xml が破損しているか途中で切れています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="263"/>
+        <source>It has no visible layer.</source>
+        <translation>表示されるレイヤーがありません。</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/picture_decode.cpp" line="23"/>
         <source>“%1” cannot be imported: %2</source>
         <translation>「%1」は読み込めません: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="30"/>
+        <source>Its picture has no size.</source>
+        <translation>画像に大きさがありません。</translation>
     </message>
     <message>
         <location filename="../model/src/picture/picture_decode.cpp" line="32"/>
@@ -2709,10 +2866,87 @@
         <translation>画像を合わせると %1 MB を超えるメモリが必要です。</translation>
     </message>
     <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="72"/>
+        <source>Its picture is cut short (the file is incomplete).</source>
+        <translation>画像が途中で切れています（ファイルが不完全です）。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="83"/>
+        <source>Its picture cannot be decoded: the file is damaged, cut short or too large.</source>
+        <translation>画像をデコードできません。ファイルが破損しているか、途中で切れているか、大きすぎます。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="93"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="35"/>
+        <source>It is empty.</source>
+        <translation>空です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="101"/>
+        <source>It holds a picture of a kind Finbook cannot read.</source>
+        <translation>Finbook が読めない種類の画像です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="108"/>
+        <source>Its picture cannot be decoded.</source>
+        <translation>画像をデコードできません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="114"/>
+        <source>There is not enough memory to read it.</source>
+        <translation>読み込むためのメモリが足りません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_import.cpp" line="33"/>
+        <source>It cannot be read (is it there, and may Finbook read it?).</source>
+        <translation>読み込めません（ファイルは存在し、Finbook に読み取り権限がありますか？）。</translation>
+    </message>
+    <message>
         <location filename="../model/src/picture/picture_import.cpp" line="44"/>
         <location filename="../model/src/picture/picture_import.cpp" line="48"/>
         <source>It is larger than %1 MB.</source>
         <translation>%1 MB を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="40"/>
+        <source>The picture is empty.</source>
+        <translation>画像が空です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="44"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="184"/>
+        <source>There is not enough memory for the picture.</source>
+        <translation>画像のためのメモリが足りません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="49"/>
+        <source>The picture could not be encoded to be saved: %1</source>
+        <translation>保存用に画像をエンコードできませんでした：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="64"/>
+        <source>The picture&apos;s outline cannot be traced: %1</source>
+        <translation>画像の輪郭を抽出できません：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
+        <source>The picture is fully transparent: nothing of it shows.</source>
+        <translation>画像が完全に透明で、何も見えません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="75"/>
+        <source>The picture&apos;s outline cannot be meshed: %1</source>
+        <translation>画像の輪郭をメッシュにできません：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="169"/>
+        <source>The object has no picture.</source>
+        <translation>オブジェクトに画像がありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_object.cpp" line="179"/>
+        <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
+        <translation>ポーズをつけた画像が大きすぎて保持できません（幅と高さは最大 %1 ピクセル）。</translation>
     </message>
 </context>
 <context>
@@ -3351,12 +3585,12 @@
 <context>
     <name>finbook::ui::BetweenFitView</name>
     <message>
-        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="37"/>
+        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="38"/>
         <source>Drag from a line of the first drawing to where it belongs on the second to pin it there; drag a pin to move it, right-click it to take it away.</source>
         <translation>最初の絵の線から二番目の絵の対応する場所へドラッグするとピンで留まります。ピンはドラッグで動かし、右クリックで外します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="141"/>
+        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="137"/>
         <source>No drawing to fit</source>
         <translation>合わせる絵がありません</translation>
     </message>
@@ -4889,7 +5123,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window.cpp" line="353"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="278"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="322"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
@@ -4919,107 +5153,130 @@
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="29"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="33"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook アニメーション (*.finbook);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="40"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="44"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="75"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="79"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="134"/>
         <source>Cannot Open File</source>
         <translation>ファイルを開けません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="169"/>
         <source>Cannot Save File</source>
         <translation>ファイルを保存できません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="175"/>
         <source>Saved %1</source>
         <translation>%1 を保存しました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="141"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>%1 の読み取れた部分を開きました（%n 件の問題を修復）。新しい名前で保存してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="93"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="102"/>
         <source>Cannot Open the Example</source>
         <translation>見本を開けません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="107"/>
         <source>The example walk cycle: change it and save it as your own.</source>
         <translation>見本の歩きサイクルです。変更して自分のものとして保存できます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="234"/>
         <source>No recent files</source>
         <translation>最近使ったファイルはありません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
         <source>Cannot Import Mesh</source>
         <translation>メッシュをインポートできません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="269"/>
+        <source>Reading &quot;%1&quot;...</source>
+        <translation>「%1」を読み込んでいます…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <source>Import Picture</source>
+        <translation>画像を読み込む</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="282"/>
+        <source>Cannot Import Picture</source>
+        <translation>画像を読み込めません</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
+        <source>Imported &quot;%1&quot;: %n picture object(s).</source>
+        <translation>
+            <numerusform>「%1」を読み込みました：画像オブジェクト %n 個。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="310"/>
         <source>Damaged File</source>
         <translation>破損したファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="311"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>「このまま開く」を選ぶと、まだ読み取れる部分を未保存の新しいアニメーションとして表示します。破損したファイルは変更されません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="270"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="314"/>
         <source>Open Anyway</source>
         <translation>このまま開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
         <source>Unsaved Changes</source>
         <translation>未保存の変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="281"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="325"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>「%1」には保存されていない変更があります。続ける前に保存しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="287"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="331"/>
         <source>Open Animation</source>
         <translation>アニメーションを開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="337"/>
         <source>Save Animation</source>
         <translation>アニメーションを保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="338"/>
         <source>untitled.finbook</source>
         <translation>無題.finbook</translation>
     </message>
@@ -5085,222 +5342,232 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_menus.cpp" line="119"/>
+        <source>Import &amp;Picture...</source>
+        <translation>画像を読み込む(&amp;P)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <source>Pictures (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster stacks (*.ora);;All files (*)</source>
+        <translation>画像 (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster スタック (*.ora);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
         <source>Import Re&amp;ference...</source>
         <translation>参照を読み込む(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
         <source>Cannot Import Reference</source>
         <translation>参照を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="157"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="215"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="245"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>Rotate View &amp;Left</source>
         <translation>表示を左に回転(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>Rotate View &amp;Right</source>
         <translation>表示を右に回転(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>R&amp;eset View Rotation</source>
         <translation>表示の回転をリセット(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>Mirror Vie&amp;w</source>
         <translation>表示を左右反転(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="284"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="290"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="301"/>
         <source>&amp;Camera View</source>
         <translation>カメラビュー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
         <source>&amp;Dim Other Layers</source>
         <translation>他のレイヤーを薄く表示(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="303"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="314"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="309"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="333"/>
         <source>&amp;Layer</source>
         <translation>レイヤー(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="340"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="347"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="350"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="361"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="360"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="371"/>
         <source>Finbook &amp;Manual</source>
         <translation>Finbook マニュアル(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="365"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="376"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="397"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="408"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="421"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="432"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="422"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="433"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>やり直す</translation>
@@ -5466,7 +5733,7 @@
     <name>finbook::ui::ManualBrowser</name>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="30"/>
-        <location filename="../ui/src/help/manual_browser.cpp" line="98"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="99"/>
         <source>Contents</source>
         <translation>目次</translation>
     </message>
@@ -5522,51 +5789,56 @@
     </message>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
+        <source>Pictures as Objects</source>
+        <translation>オブジェクトとしての画像</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
         <source>Reference Pictures and Video</source>
         <translation>参照画像と動画</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
         <source>Exporting</source>
         <translation>書き出し</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
         <source>Saving, Autosave and Recovery</source>
         <translation>保存、自動保存、復元</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
         <source>The Command Line</source>
         <translation>コマンドライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="46"/>
         <source>Keyboard Shortcuts</source>
         <translation>キーボードショートカット</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="46"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="47"/>
         <source>Installing</source>
         <translation>インストール</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="83"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="84"/>
         <source>Finbook Manual</source>
         <translation>Finbook マニュアル</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
         <source>Back</source>
         <translation>戻る</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="98"/>
         <source>Forward</source>
         <translation>進む</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="103"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="104"/>
         <source>Search the manual</source>
         <translation>マニュアルを検索</translation>
     </message>

@@ -4,7 +4,7 @@
 <context>
     <name>Deformation</name>
     <message numerus="yes">
-        <location filename="../../model/src/cage/cage_setup.cpp" line="40"/>
+        <location filename="../../model/src/cage/cage_setup.cpp" line="41"/>
         <source>%n stroke point(s) lie outside the cage; move its corners out so it encloses the drawing.</source>
         <translation>
             <numerusform>%n stroke point lies outside the cage; move its corners out so it encloses the drawing.</numerusform>
@@ -50,7 +50,7 @@
 <context>
     <name>FinbookFile</name>
     <message numerus="yes">
-        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="339"/>
+        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="341"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>its pose has %n stroke but the object has %1</numerusform>
@@ -58,7 +58,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="346"/>
+        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>stroke %1 has %n point but its pose has %2</numerusform>
@@ -74,7 +74,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/src/finbook_file_recover.cpp" line="88"/>
+        <location filename="../../model/src/finbook_file_recover.cpp" line="126"/>
         <source>%n missing or repeated id(s) were replaced by new ones</source>
         <translation>
             <numerusform>%n missing or repeated id was replaced by a new one</numerusform>
@@ -171,7 +171,7 @@
 <context>
     <name>finbook::ui::LipSyncDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/src/lipsync/lip_sync_dialog.cpp" line="244"/>
+        <location filename="../../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
         <source>Keyed the mouth on %n frame(s), %1.</source>
         <translation>
             <numerusform>Keyed the mouth on %n frame, %1.</numerusform>
@@ -179,7 +179,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
+        <location filename="../../ui/src/lipsync/lip_sync_dialog.cpp" line="248"/>
         <source>%n frame(s) of the mouth&apos;s layer hold no mouth and were left as they were.</source>
         <translation>
             <numerusform>%n frame of the mouth&apos;s layer holds no mouth and was left as it was.</numerusform>
@@ -190,11 +190,19 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../ui/src/window/main_window_files.cpp" line="137"/>
+        <location filename="../../ui/src/window/main_window_files.cpp" line="141"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Opened what was readable of %1 (%n problem repaired); save it under a new name.</numerusform>
             <numerusform>Opened what was readable of %1 (%n problems repaired); save it under a new name.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../ui/src/window/main_window_files.cpp" line="294"/>
+        <source>Imported &quot;%1&quot;: %n picture object(s).</source>
+        <translation>
+            <numerusform>Imported &quot;%1&quot;: %n picture object.</numerusform>
+            <numerusform>Imported &quot;%1&quot;: %n picture objects.</numerusform>
         </translation>
     </message>
 </context>

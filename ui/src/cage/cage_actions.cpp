@@ -78,7 +78,7 @@ QSpinBox *CageActions::createCornersSpinBox(QWidget *parent)
 bool CageActions::fitCage()
 {
     const model::StrokeGroup *g = m_state->currentGroup();
-    if (!g || g->strokes.empty() || g->locked) {
+    if (!g || !g->hasContent() || g->locked) {
         emit messagePosted(tr("Choose an unlocked object with strokes to fit a cage to."));
         return false;
     }
@@ -98,7 +98,7 @@ bool CageActions::fitCage()
 void CageActions::updateEnabled()
 {
     const model::StrokeGroup *g = m_state->currentGroup();
-    m_fit->setEnabled(g && !g->strokes.empty() && !g->locked);
+    m_fit->setEnabled(g && g->hasContent() && !g->locked);
 }
 
 CageOverlay::CageOverlay(EditorState *state, CageTool *tool)

@@ -38,7 +38,7 @@ void MeshOverlay::requestMissing()
         const model::DeformSetup *setup = m_controller->setup(g.id);
         const bool current =
             setup && setup->key == model::MeshKey::of(g, m_state->document()->settings().closeGap);
-        if (g.visible && !g.strokes.empty() && !current && !m_controller->isWaiting(g.id))
+        if (g.visible && g.hasContent() && !current && !m_controller->isWaiting(g.id))
             m_controller->requestMesh(g.id);
     }
 }

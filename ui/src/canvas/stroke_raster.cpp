@@ -1,5 +1,7 @@
 #include "stroke_raster.h"
 
+#include <finbook/model/picture/picture_object.h>
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -269,11 +271,13 @@ void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptio
     }
     const qreal itemOpacity = layered ? 1.0 : opacity;
     // paintList folds repeated references of one stroke into one item, as paintFrame does.
-    if (!model::frameHasFills(frame, options)) {
+    if (!model::frameHasFills(frame, options) && !model::frameHasPictures(frame, options)) {
         for (const model::PaintItem &item : model::paintList(frame, options))
             drawStroke(*item.points, item.color, item.width, itemOpacity);
     } else {
         for (const model::StrokeGroup &group : frame.groups) {
+            if (group.picture && (group.visible || options.showHidden))
+                drawPicture(group, options.tint, itemOpacity);
             for (const model::PaintLayer &layer : model::paintLayers(group, settings, options)) {
                 for (const model::FillItem &fill : layer.fills) {
                     drawFill(fill.path, fill.color, itemOpacity);
@@ -287,6 +291,30 @@ void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptio
     }
     if (layered)
         flushGhost(opacity);
+}
+
+void StrokeRaster::drawPicture(const model::StrokeGroup &group, const std::optional<QColor> &tint,
+                               qreal opacity)
+{
+    if (m_clip.isEmpty() || opacity <= 0)
+        return;
+    const QTransform view = m_toDevice * QTransform::fromTranslate(-m_clip.left(), -m_clip.top());
+    if (m_ghostActive) {
+        // Into the ghost layer (clip-relative), which flushGhost lays on the image.
+        QImage ghost(reinterpret_cast<uchar *>(m_ghost.data()), m_width, m_height,
+                     qsizetype(m_width) * 4, QImage::Format_ARGB32_Premultiplied);
+        model::drawPicture(ghost, view, group, 1.0, tint);
+        const QRectF shown = view.mapRect(model::shownPictureBounds(group));
+        if (std::isfinite(shown.left()) && std::isfinite(shown.right()) &&
+            std::isfinite(shown.top()) && std::isfinite(shown.bottom()))
+            m_ghostBox |=
+                shown.toAlignedRect().adjusted(-1, -1, 1, 1) & QRect(0, 0, m_width, m_height);
+        return;
+    }
+    // Straight into this band of the image: a picture over its own rows, no scratch copy.
+    QImage band(m_bits + qsizetype(m_clip.top()) * m_stride + qsizetype(m_clip.left()) * 4, m_width,
+                m_height, m_stride, QImage::Format_ARGB32_Premultiplied);
+    model::drawPicture(band, view, group, opacity, tint);
 }
 
 void StrokeRaster::flushGhost(qreal opacity)

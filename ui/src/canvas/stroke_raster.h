@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace finbook::ui {
@@ -43,6 +44,10 @@ public:
                     qreal opacity);
     // A fill (canvas pixels, the path's own fill rule), antialiased by QPainter.
     void drawFill(const QPainterPath &path, QRgb color, qreal opacity);
+    // A picture object's picture as it shows now (picture/picture_object.h), under its fills;
+    // `tint` recolours it at its own alpha (the onion skin).
+    void drawPicture(const model::StrokeGroup &group, const std::optional<QColor> &tint,
+                     qreal opacity);
     // paintFrame()'s rules: hidden objects skipped unless options.showHidden, the tint
     // replaces every colour, each object's fills under its strokes (regions closed with
     // settings.closeGap; shaded fills lit by its light). No background. A frame drawn with

@@ -38,6 +38,7 @@ QList<ManualBrowser::Page> ManualBrowser::pages()
         {QStringLiteral("timeline.md"), tr("Timeline, Layers and Sound")},
         {QStringLiteral("lip-sync.md"), tr("Swapping Drawings and Lip Sync")},
         {QStringLiteral("camera.md"), tr("Camera")},
+        {QStringLiteral("pictures.md"), tr("Pictures as Objects")},
         {QStringLiteral("reference.md"), tr("Reference Pictures and Video")},
         {QStringLiteral("exporting.md"), tr("Exporting")},
         {QStringLiteral("files.md"), tr("Saving, Autosave and Recovery")},

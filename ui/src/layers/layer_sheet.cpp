@@ -42,7 +42,7 @@ const QColor kPicked(0xf0, 0x90, 0x30), kDrop(0xd0, 0x30, 0x30);
 bool showsNothing(const model::Frame &cel)
 {
     return std::all_of(cel.groups.begin(), cel.groups.end(),
-                       [](const model::StrokeGroup &g) { return g.strokes.empty(); });
+                       [](const model::StrokeGroup &g) { return !g.hasContent(); });
 }
 } // namespace
 

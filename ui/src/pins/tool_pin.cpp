@@ -122,7 +122,7 @@ model::Id PinTool::objectAt(const ToolEvent &event) const
         current && pinEditable(*current) && objectHit(*current, event))
         return current->id;
     for (auto it = f->groups.rbegin(); it != f->groups.rend(); ++it)
-        if (pinEditable(*it) && !it->strokes.empty() && objectHit(*it, event))
+        if (pinEditable(*it) && it->hasContent() && objectHit(*it, event))
             return it->id;
     return model::kNoId;
 }

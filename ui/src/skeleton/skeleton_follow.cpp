@@ -36,7 +36,7 @@ void followDrawing(EditorState &state, const std::vector<model::Id> &groupIds)
         if (!g || g->rig.kind() != model::RigKind::Skeleton || g->rig.skeleton.isPosed())
             continue;
         const model::SkeletonRig &old = g->rig.skeleton;
-        if (g->strokes.empty()) {
+        if (!g->hasContent()) {
             doc->undoStack()->push(new model::RemoveRigCommand(doc, id));
             continue;
         }

@@ -2,6 +2,7 @@
 
 #include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/region.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/render.h>
 #include <finbook/model/stroke_input.h>
 
@@ -110,6 +111,8 @@ model::Id strokeAt(const model::Frame &frame, const QPointF &p, qreal tolerance)
 
 bool insideShape(const model::StrokeGroup &g, double closeGap, QPointF pos)
 {
+    if (model::pictureShowsAt(g, pos))
+        return true;
     std::vector<geometry::StrokeInput> inputs;
     double left = HUGE_VAL, top = HUGE_VAL, right = -HUGE_VAL, bottom = -HUGE_VAL;
     for (std::size_t s = 0; s < g.strokes.size(); ++s) {

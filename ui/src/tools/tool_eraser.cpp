@@ -124,7 +124,7 @@ void EraserTool::finish()
     // with skeleton_follow's rule, or here when the skeleton does not follow).
     for (model::Id id : m_erasedFrom)
         if (const model::StrokeGroup *g = doc->group(id);
-            g && g->strokes.empty() && !g->rig.empty() &&
+            g && !g->hasContent() && !g->rig.empty() &&
             std::find(m_following.begin(), m_following.end(), id) == m_following.end())
             doc->undoStack()->push(new model::RemoveRigCommand(doc, id));
     m_erasedFrom.clear();

@@ -3,6 +3,8 @@
 #include <finbook/model/document.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/import/mesh_import.h>
+#include <finbook/model/picture/picture_commands.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/reference/reference_layer.h>
 #include <finbook/ui/dialogs/file_messages.h>
 #include <finbook/ui/window/editor_state.h>
@@ -15,9 +17,11 @@
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QMenu>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
+#include <QThread>
 
 namespace finbook::ui {
 
@@ -250,6 +254,46 @@ bool MainWindow::importMesh(const QString &path)
         stack->push(new model::AddStrokeCommand(m_doc, groupId, stroke));
     stack->endMacro();
     m_state->setCurrentGroupId(groupId);
+    return true;
+}
+
+bool MainWindow::importPicture(const QString &path)
+{
+    // Reading, tracing and meshing a large picture takes a while: on a worker, the window
+    // kept painting behind a modal progress dialog.
+    auto result =
+        std::make_shared<Expected<std::vector<model::StrokeGroup>, QString>>(unexpected(QString()));
+    const QSizeF page(m_doc->settings().canvasSize);
+    QThread *worker = QThread::create(
+        [result, path, page] { *result = model::pictureObjectsFromFile(path, page); });
+    QProgressDialog progress(tr("Reading \"%1\"...").arg(QFileInfo(path).fileName()), QString(), 0,
+                             0, this);
+    progress.setWindowTitle(tr("Import Picture"));
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(0);
+    progress.setCancelButton(nullptr);
+    connect(worker, &QThread::finished, &progress, &QDialog::accept);
+    worker->start();
+    if (!worker->isFinished())
+        progress.exec();
+    worker->wait();
+    delete worker;
+    if (!*result) {
+        reportError(tr("Cannot Import Picture"), result->error());
+        return false;
+    }
+    auto *command =
+        new model::ImportPictureCommand(m_doc, m_state->currentFrameId(), -1, std::move(**result));
+    if (command->isObsolete()) {
+        delete command;
+        return false;
+    }
+    const model::Id top = command->objectIds().back();
+    m_doc->undoStack()->push(command);
+    m_state->setCurrentGroupId(top);
+    statusBar()->showMessage(
+        tr("Imported \"%1\": %n picture object(s).", nullptr, int(command->objectIds().size()))
+            .arg(QFileInfo(path).fileName()));
     return true;
 }
 

@@ -115,6 +115,16 @@ void MainWindow::createFileMenu()
         if (!path.isEmpty())
             importMesh(path);
     });
+    QAction *pictureAction =
+        makeAction(QStringLiteral("file.importPicture"), tr("Import &Picture..."));
+    connect(pictureAction, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Import Picture"), QFileInfo(m_path).path(),
+            tr("Pictures (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;"
+               "OpenRaster stacks (*.ora);;All files (*)"));
+        if (!path.isEmpty())
+            importPicture(path);
+    });
     QAction *referenceAction =
         makeAction(QStringLiteral("file.importReference"), tr("Import Re&ference..."));
     connect(referenceAction, &QAction::triggered, this, [this] {
@@ -131,6 +141,7 @@ void MainWindow::createFileMenu()
     m_fileMenu->addAction(saveAsAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(importAction);
+    m_fileMenu->addAction(pictureAction);
     m_fileMenu->addAction(referenceAction);
     m_fileMenu->addAction(m_sound->importAction());
     m_fileMenu->addAction(exportAnimation);

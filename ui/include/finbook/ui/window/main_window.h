@@ -63,6 +63,11 @@ public:
     // Adds a 2D OFF mesh to the current frame as a new object (its outline as strokes), as
     // one undo step. False, with a message, when the file cannot be read.
     bool importMesh(const QString &path);
+    // File → Import Picture: the picture (or each visible layer of an OpenRaster stack) as
+    // picture objects on top of the current frame, centred on the page, as one undo step. Read
+    // and meshed on a worker while a progress dialog shows. False, with a message, when the
+    // file cannot be imported.
+    bool importPicture(const QString &path);
     // Saves to `path` and makes it the document's file; false (reported) on failure.
     bool saveFile(const QString &path);
     // Replaces the document with a new one (1 frame, 1 empty object) without asking.
