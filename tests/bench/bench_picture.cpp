@@ -12,7 +12,12 @@
 
 #include <finbook/geometry/object_mesh.h>
 #include <finbook/geometry/region.h>
+#include <finbook/model/commands.h>
+#include <finbook/model/document.h>
+#include <finbook/model/finbook_file.h>
+#include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/picture/picture_import.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/picture/picture_shape.h>
 #include <finbook/model/picture/textured_mesh.h>
 
@@ -260,11 +265,52 @@ void benchFile(const QString &path, const PictureBenchOptions &options)
     }
 }
 
+// --finbook OUT: every file's pictures as picture objects (File → Import Picture's work), one
+// frame per file, saved as a document to open in Finbook; each file's import time and the
+// saved size are printed.
+int saveDocument(const QStringList &files, const QString &out)
+{
+    model::Document doc;
+    std::vector<std::vector<model::StrokeGroup>> imported;
+    for (const QString &file : files) {
+        const auto start = Clock::now();
+        auto objects = model::pictureObjectsFromFile(file, QSizeF(1920, 1080));
+        QJsonObject row{{QStringLiteral("bench"), QStringLiteral("picture_import")},
+                        {QStringLiteral("file"), QFileInfo(file).fileName()},
+                        {QStringLiteral("import_ms"), msSince(start)}};
+        if (!objects)
+            row[QStringLiteral("error")] = objects.error();
+        else
+            row[QStringLiteral("objects")] = qint64(objects->size());
+        std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
+        if (objects)
+            imported.push_back(std::move(*objects));
+    }
+    model::DocumentSettings settings = doc.settings();
+    settings.canvasSize = QSize(1920, 1080);
+    doc.undoStack()->push(new model::ChangeSettingsCommand(&doc, settings));
+    for (std::size_t i = 0; i < imported.size(); ++i) {
+        if (i > 0)
+            doc.undoStack()->push(new model::InsertFrameCommand(&doc, int(i)));
+        doc.undoStack()->push(new model::ImportPictureCommand(&doc, doc.frameAt(int(i)).id, -1,
+                                                              std::move(imported[i])));
+    }
+    if (const auto error = model::saveFinbook(doc, out)) {
+        std::fprintf(stderr, "%s\n", qPrintable(error->message));
+        return 1;
+    }
+    QJsonObject row{{QStringLiteral("bench"), QStringLiteral("picture_document")},
+                    {QStringLiteral("file"), out},
+                    {QStringLiteral("bytes"), QFileInfo(out).size()}};
+    std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
+    return 0;
+}
+
 int benchPicture(const QStringList &args)
 {
     PictureBenchOptions options;
     QStringList files;
-    QString silhouettes, renderTo;
+    QString silhouettes, renderTo, finbook;
     for (int i = 0; i < args.size(); ++i) {
         if (args[i] == QLatin1String("--silhouettes") && i + 1 < args.size())
             silhouettes = args[++i];
@@ -272,6 +318,8 @@ int benchPicture(const QStringList &args)
             renderTo = args[++i];
         else if (args[i] == QLatin1String("--redraws") && i + 1 < args.size())
             options.redraws = std::max(1, args[++i].toInt());
+        else if (args[i] == QLatin1String("--finbook") && i + 1 < args.size())
+            finbook = args[++i];
         else if (args[i] == QLatin1String("--vertices") && i + 1 < args.size())
             options.vertices = std::max(10, args[++i].toInt());
         else
@@ -291,9 +339,11 @@ int benchPicture(const QStringList &args)
     }
     if (files.isEmpty()) {
         std::fprintf(stderr, "usage: finbook-bench picture [--silhouettes DIR [--render-to DIR]] "
-                             "[--redraws N] [--vertices N] FILE...\n");
+                             "[--redraws N] [--vertices N] [--finbook OUT] FILE...\n");
         return 2;
     }
+    if (!finbook.isEmpty())
+        return saveDocument(files, finbook);
     for (const QString &file : files)
         benchFile(file, options);
     return 0;
@@ -302,7 +352,8 @@ int benchPicture(const QStringList &args)
 } // namespace
 
 FINBOOK_BENCH("picture",
-              "[--silhouettes DIR [--render-to DIR]] [--redraws N] [--vertices N] FILE...  "
+              "[--silhouettes DIR [--render-to DIR]] [--redraws N] [--vertices N] "
+              "[--finbook OUT] FILE...  "
               "pictures (PNG, .ora) as "
               "deformable objects: trace, mesh, rest PSNR, 1080p redraw",
               benchPicture);
