@@ -10,6 +10,7 @@
 #include <finbook/model/skeleton/skeleton_setup.h>
 #include <finbook/model/stroke_input.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace finbook::model {
@@ -40,6 +41,14 @@ Eigen::MatrixX2d restPoints(const MeshKey &key, std::vector<std::size_t> &offset
     if (picture.rows() > 0)
         points.bottomRows(picture.rows()) = picture;
     return points;
+}
+
+bool operator==(const MeshKey &a, const MeshKey &b)
+{
+    const bool samePicture =
+        a.picture == b.picture || (a.picture && b.picture && *a.picture == *b.picture);
+    return samePicture && a.strokes == b.strokes && a.density == b.density &&
+           a.closeGap == b.closeGap;
 }
 
 MeshKey MeshKey::of(const StrokeGroup &group, double closeGap)
@@ -91,7 +100,8 @@ Expected<geometry::ObjectMesh, geometry::GeometryError> pictureObjectMesh(const 
     if (!mesh || density == kDefaultMeshDensity)
         return mesh;
     geometry::MeshOptions options;
-    options.targetVertices = kPictureMeshVertices;
+    options.targetVertices =
+        std::clamp(int(geometry::regionArea(mesh->region) / 64.0), 64, kPictureMeshVertices);
     options.density = density;
     options.repair.cornerRadius = 0.0;
     options.repair.simplifyTolerance = 0.1;

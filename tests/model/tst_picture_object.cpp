@@ -7,6 +7,7 @@
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/document.h>
 #include <finbook/model/finbook_file.h>
+#include <finbook/model/inbetween/inbetween_plan.h>
 #include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/picture/picture_object.h>
 #include <finbook/model/render.h>
@@ -340,8 +341,18 @@ void TestPictureObject::saveOpenKeepsOnePictureForAllFrames()
     QCOMPARE(first.picture->mesh->uv, s.doc.group(s.object)->picture->mesh->uv);
     QCOMPARE(first.picture->mesh->F, s.doc.group(s.object)->picture->mesh->F);
     QCOMPARE(first.deformed->pictureVertices, s.doc.group(s.object)->deformed->pictureVertices);
-    for (int i = 1; i < reopened.frameCount(); ++i)
-        QVERIFY(reopened.frameAt(i).groups.back().picture->data == first.picture->data);
+    for (int i = 1; i < reopened.frameCount(); ++i) {
+        const StrokeGroup &later = reopened.frameAt(i).groups.back();
+        QVERIFY(later.picture->data == first.picture->data);
+        // The same drawing for meshing, precomputes and in-betweens, though each object of the
+        // opened file holds its own picture record.
+        QVERIFY(later.picture != first.picture);
+        QVERIFY(MeshKey::of(later, -1.0) == MeshKey::of(first, -1.0));
+    }
+    // In-betweens between two frames of it interpolate its pins.
+    const InbetweenPlan plan =
+        planInbetweens(reopened.frameAt(0), reopened.frameAt(1), std::vector<double>{0.5});
+    QCOMPARE(plan.interpolatedCount(), 1);
     Frame a, b;
     a.groups.push_back(*s.doc.group(s.object));
     b.groups.push_back(first);

@@ -15,7 +15,7 @@ constexpr double kSwitchOver = 0.5; // objects of one key only: first key's befo
 
 bool sameDrawing(const StrokeGroup &a, const StrokeGroup &b)
 {
-    return !a.strokes.empty() && MeshKey::of(a, -1.0) == MeshKey::of(b, -1.0);
+    return a.hasContent() && MeshKey::of(a, -1.0) == MeshKey::of(b, -1.0);
 }
 
 ObjectFate pairFate(const StrokeGroup &a, const StrokeGroup &b)

@@ -71,7 +71,10 @@ Expected<PictureMeshPtr, QString> meshPicture(const QImage &image, double densit
         return unexpected(pictureTr(QT_TRANSLATE_NOOP(
             "PictureImport", "The picture is fully transparent: nothing of it shows.")));
     geometry::MeshOptions options;
-    options.targetVertices = kPictureMeshVertices;
+    // About one vertex per 8 × 8 px of picture, at most kPictureMeshVertices: a small picture
+    // needs no finer mesh to bend smoothly, and costs less to solve, draw and save.
+    options.targetVertices =
+        std::clamp(int(geometry::regionArea(*shape) / 64.0), 64, kPictureMeshVertices);
     options.density = std::isfinite(density) && density > 0.0 ? std::min(density, 100.0) : 1.0;
     options.repair.cornerRadius = 0.0; // rounding corners would cut visible pixels off
     options.repair.simplifyTolerance = 0.1;

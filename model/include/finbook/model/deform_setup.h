@@ -29,7 +29,9 @@ struct MeshKey {
     // A picture object's picture (picture/picture_object.h): its texture mesh is the object's
     // mesh, and its vertices are rest points after the strokes' (restPoints).
     std::shared_ptr<const ObjectPicture> picture;
-    friend bool operator==(const MeshKey &, const MeshKey &) = default;
+    // Pictures compare by what they are (the same pixels and texture mesh at the same place),
+    // not by which object holds them: each object of an opened file holds its own.
+    friend bool operator==(const MeshKey &a, const MeshKey &b);
     static MeshKey of(const StrokeGroup &group, double closeGap);
 };
 

@@ -66,7 +66,8 @@ inline constexpr int kPictureMeshVertices = 2000;
 Expected<PictureDataPtr, QString> makePictureData(const QImage &image);
 
 // The texture mesh of `image`: the outline of its pixels that show (alpha ≥ 1; the whole
-// rectangle when it is opaque), meshed with about kPictureMeshVertices × density² vertices.
+// rectangle when it is opaque), meshed with about one vertex per 8 × 8 px of it, at least 64
+// and at most kPictureMeshVertices (times density²).
 // Errors: a sentence (fully transparent, or an outline that cannot be meshed).
 Expected<PictureMeshPtr, QString> meshPicture(const QImage &image, double density = 1.0);
 
