@@ -6,6 +6,7 @@
 #include <finbook/model/commands.h>
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/document.h>
+#include <finbook/model/export/exporter.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/inbetween/inbetween_plan.h>
 #include <finbook/model/picture/picture_commands.h>
@@ -15,6 +16,7 @@
 #include <finbook/model/skeleton/skeleton_join_commands.h>
 
 #include <QPainter>
+#include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -33,6 +35,8 @@ private slots:
     void importIsOneUndoStep();
     void saveOpenKeepsOnePictureForAllFrames();
     void damagedPicturesAreRefusedOrLeftOut();
+    void exportsShowThePictureAsPosed_data();
+    void exportsShowThePictureAsPosed();
 };
 
 namespace {
@@ -395,6 +399,57 @@ void TestPictureObject::damagedPicturesAreRefusedOrLeftOut()
     QVERIFY(!problems.isEmpty());
     // Cut inside the picture section.
     QVERIFY(!readFinbook(bytes.left(section + 200)).hasValue());
+}
+
+void TestPictureObject::exportsShowThePictureAsPosed_data()
+{
+    QTest::addColumn<int>("format");
+    QTest::newRow("png") << int(ExportFormat::PngSequence);
+    QTest::newRow("svg") << int(ExportFormat::SvgSequence);
+}
+
+void TestPictureObject::exportsShowThePictureAsPosed()
+{
+    QFETCH(int, format);
+    Posed s;
+    pose(s, 30.0);
+    DocumentSettings settings = s.doc.settings();
+    settings.canvasSize = QSize(240, 180);
+    QTemporaryDir dir;
+    ExportOptions o;
+    o.format = ExportFormat(format);
+    o.target = dir.filePath(QStringLiteral("frames"));
+    const auto result = exportAnimation(ExportSource{s.doc.frames(), settings}, o);
+    QVERIFY(result.hasValue());
+    QCOMPARE(result->files.size(), 1);
+    QImage exported;
+    if (o.format == ExportFormat::SvgSequence) {
+        QSvgRenderer renderer(result->files.front());
+        QVERIFY(renderer.isValid());
+        exported = QImage(240, 180, QImage::Format_ARGB32_Premultiplied);
+        exported.fill(Qt::white);
+        QPainter painter(&exported);
+        renderer.render(&painter);
+    } else {
+        exported =
+            QImage(result->files.front()).convertToFormat(QImage::Format_ARGB32_Premultiplied);
+    }
+    // The posed picture as the canvas paints it, on the page's white.
+    QImage shown(240, 180, QImage::Format_ARGB32_Premultiplied);
+    shown.fill(Qt::white);
+    {
+        QPainter p(&shown);
+        RenderOptions options;
+        options.paintBackground = false;
+        paintFrame(p, s.doc.frameAt(0), settings, options);
+    }
+    const QImage inside = interior(render(s.doc.frameAt(0)));
+    int opaque = 0;
+    for (int y = 0; y < inside.height(); ++y)
+        for (int x = 0; x < inside.width(); ++x)
+            opaque += qAlpha(inside.pixel(x, y)) == 255;
+    QVERIFY(opaque > 5000);
+    QVERIFY(largestDifference(exported, shown, 0, &inside) <= 3);
 }
 
 QTEST_MAIN(TestPictureObject)

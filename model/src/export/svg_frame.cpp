@@ -6,8 +6,10 @@
 #include "export_formats.h"
 
 #include <finbook/model/fill/fill_render.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/render.h>
 
+#include <QBuffer>
 #include <QLineF>
 
 #include <algorithm>
@@ -217,6 +219,39 @@ void appendCutOutPose(QByteArray &svg, const StrokeGroup &group, const DocumentS
         appendStroke(svg, id, *stroke.data, d);
     }
 }
+// A picture object's picture as the object shows it, drawn at the export's scale into a PNG
+// embedded as an <image> over the part of it that can show (under the object's fills and
+// lines, as the canvas paints it).
+void appendPicture(QByteArray &svg, const StrokeGroup &group, const QRectF &visible, double scale)
+{
+    const QRectF shown = shownPictureBounds(group).adjusted(-1, -1, 1, 1) & visible;
+    if (shown.isEmpty() || !(scale > 0.0))
+        return;
+    const QRect box(QPoint(int(std::floor(shown.left())), int(std::floor(shown.top()))),
+                    QPoint(int(std::ceil(shown.right())) - 1, int(std::ceil(shown.bottom())) - 1));
+    const QSize pixels(std::max(1, int(std::ceil(box.width() * scale))),
+                       std::max(1, int(std::ceil(box.height() * scale))));
+    QImage image(pixels, QImage::Format_ARGB32_Premultiplied);
+    if (image.isNull())
+        return;
+    image.fill(Qt::transparent);
+    drawPicture(image,
+                QTransform::fromTranslate(-box.left(), -box.top()) *
+                    QTransform::fromScale(double(pixels.width()) / box.width(),
+                                          double(pixels.height()) / box.height()),
+                group);
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    if (!image.save(&buffer, "PNG"))
+        return;
+    svg += "<image id=\"picture-" + QByteArray::number(group.id) + "\" x=\"" +
+           QByteArray::number(box.left()) + "\" y=\"" + QByteArray::number(box.top()) +
+           "\" width=\"" + QByteArray::number(box.width()) + "\" height=\"" +
+           QByteArray::number(box.height()) +
+           "\" preserveAspectRatio=\"none\" xlink:href=\"data:image/png;base64," + png.toBase64() +
+           "\"/>\n";
+}
 } // namespace
 
 QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const ExportPlan &plan,
@@ -277,6 +312,8 @@ QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const 
         if (!group.visible)
             continue;
         svg += "<g id=\"object-" + QByteArray::number(group.id) + "\">\n";
+        if (group.picture)
+            appendPicture(svg, group, visible, double(plan.size.width()) / canvas.width());
         if (group.isDeformed() && !group.deformed->pieces.empty()) {
             appendCutOutPose(svg, group, settings, visible);
             svg += "</g>\n";
