@@ -1,11 +1,14 @@
 // File → Import Mesh: a 2D OFF mesh becomes an object whose outline is strokes, one undo
-// step, ready for a cage (the harmonic-coordinates notebook's case, done by hand).
+// step, ready for a cage (the harmonic-coordinates notebook's case, done by hand). File →
+// Import Picture and dropped files: picture objects.
 #include "tst_window_support.h"
 
 #include <finbook/model/cage/cage_setup.h>
 #include <finbook/model/document.h>
 #include <finbook/ui/cage/cage_actions.h>
 
+#include <QMimeData>
+#include <QPainter>
 #include <QTemporaryDir>
 
 using namespace finbook;
@@ -17,6 +20,7 @@ private slots:
     void cleanup() { m_settings.reset(); }
     void offMeshBecomesAnObject();
     void badMeshIsReportedAndChangesNothing();
+    void picturesComeInByMenuAndByDrop();
 
 private:
     std::unique_ptr<test::IsolatedSettings> m_settings;
@@ -55,6 +59,62 @@ void TestImportMesh::offMeshBecomesAnObject()
     // One undo step takes it away again.
     doc->undoStack()->undo();
     QCOMPARE(int(doc->frameAt(0).groups.size()), objects);
+}
+
+// File → Import Picture and a drop of picture files: picture objects on the current frame,
+// one undo step per file; a file that is no picture is reported and changes nothing.
+void TestImportMesh::picturesComeInByMenuAndByDrop()
+{
+    QuietWindow window;
+    model::Document *doc = window.document();
+    QTemporaryDir dir;
+    QImage picture(90, 60, QImage::Format_ARGB32_Premultiplied);
+    picture.fill(Qt::transparent);
+    {
+        QPainter p(&picture);
+        p.setRenderHint(QPainter::Antialiasing, true);
+        p.setBrush(QColor(40, 160, 90));
+        p.drawEllipse(QRectF(5, 5, 80, 50));
+    }
+    const QString png = dir.filePath(QStringLiteral("leaf.png"));
+    QVERIFY(picture.save(png));
+    const int objects = int(doc->frameAt(0).groups.size());
+    QVERIFY(window.importPicture(png));
+    QCOMPARE(int(doc->frameAt(0).groups.size()), objects + 1);
+    QVERIFY(doc->frameAt(0).groups.back().picture);
+    QCOMPARE(doc->frameAt(0).groups.back().name, QStringLiteral("leaf"));
+    QCOMPARE(window.editorState()->currentGroupId(), doc->frameAt(0).groups.back().id);
+    doc->undoStack()->undo();
+    QCOMPARE(int(doc->frameAt(0).groups.size()), objects);
+
+    // Dropped on the window: the same, once per file.
+    const auto drop = [&](const QList<QUrl> &urls) {
+        QMimeData mime;
+        mime.setUrls(urls);
+        QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, &mime, Qt::LeftButton,
+                              Qt::NoModifier);
+        QApplication::sendEvent(&window, &enter);
+        if (!enter.isAccepted())
+            return false;
+        QDropEvent dropped(QPointF(50, 50), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&window, &dropped);
+        return dropped.isAccepted();
+    };
+    QVERIFY(drop({QUrl::fromLocalFile(png)}));
+    QCOMPARE(int(doc->frameAt(0).groups.size()), objects + 1);
+    // Text is no file: refused.
+    QVERIFY(!drop({QUrl(QStringLiteral("https://example.com/leaf.png"))}));
+    // A file that is not a picture: reported, nothing added.
+    const QString notes = dir.filePath(QStringLiteral("notes.png"));
+    QFile file(notes);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("no picture here");
+    file.close();
+    window.errors.clear();
+    QVERIFY(drop({QUrl::fromLocalFile(notes)}));
+    QCOMPARE(window.errors.size(), 1);
+    QVERIFY(window.errors.front().contains(QStringLiteral("notes.png")));
+    QCOMPARE(int(doc->frameAt(0).groups.size()), objects + 1);
 }
 
 void TestImportMesh::badMeshIsReportedAndChangesNothing()

@@ -60,6 +60,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_shortcuts(new ShortcutRegistry(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
+    setAcceptDrops(true);
     {
         QSettings settings;
         m_prefs = Preferences::load(settings);

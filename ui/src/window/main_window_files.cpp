@@ -12,16 +12,20 @@
 #include <finbook/ui/window/welcome_dialog.h>
 
 #include <QDir>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QMenu>
+#include <QMimeData>
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QThread>
+#include <QUrl>
 
 namespace finbook::ui {
 
@@ -255,6 +259,44 @@ bool MainWindow::importMesh(const QString &path)
     stack->endMacro();
     m_state->setCurrentGroupId(groupId);
     return true;
+}
+
+namespace {
+
+// The local files a drag carries; empty when it carries none (text, a web link).
+QStringList droppedFiles(const QMimeData *mime)
+{
+    QStringList files;
+    if (mime && mime->hasUrls())
+        for (const QUrl &url : mime->urls())
+            if (url.isLocalFile() && QFileInfo(url.toLocalFile()).isFile())
+                files << url.toLocalFile();
+    return files;
+}
+
+} // namespace
+
+void MainWindow::dragEnterEvent(QDragEnterEvent *event)
+{
+    if (!droppedFiles(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent *event)
+{
+    const QStringList files = droppedFiles(event->mimeData());
+    if (files.isEmpty())
+        return;
+    event->acceptProposedAction();
+    for (const QString &path : files) {
+        if (QFileInfo(path).suffix().compare(QLatin1String("finbook"), Qt::CaseInsensitive) == 0) {
+            if (maybeSave())
+                openFile(path);
+            return; // the document changed: the other files are not for it
+        }
+        if (!importPicture(path))
+            return;
+    }
 }
 
 bool MainWindow::importPicture(const QString &path)

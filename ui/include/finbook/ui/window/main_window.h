@@ -116,6 +116,10 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    // Files dropped on the window: a .finbook opens (after asking to save the current one),
+    // anything else is imported as pictures (importPicture), one file after the other.
+    void dragEnterEvent(QDragEnterEvent *event) override;
+    void dropEvent(QDropEvent *event) override;
     // Shows one sentence to the user (with technical details under "Show Details" when a
     // file would not open). Tests override these to avoid modal dialogs.
     virtual void reportError(const QString &title, const QString &message);
