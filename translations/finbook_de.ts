@@ -563,7 +563,7 @@
         <translation>Zeichnung eigenständig machen</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_commands.cpp" line="19"/>
+        <location filename="../model/src/picture/picture_commands.cpp" line="18"/>
         <source>Import Picture</source>
         <translation>Bild importieren</translation>
     </message>
@@ -819,27 +819,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="107"/>
+        <location filename="../model/src/deform_setup.cpp" line="116"/>
         <source>The object has no strokes to deform.</source>
         <translation>Das Objekt hat keine Striche, die sich verformen ließen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="114"/>
+        <location filename="../model/src/deform_setup.cpp" line="123"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Für diese Zeichnung lässt sich kein Verformungsnetz erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="146"/>
+        <location filename="../model/src/deform_setup.cpp" line="155"/>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="197"/>
+        <location filename="../model/src/deform_setup.cpp" line="206"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>Der Käfig wurde geändert, während er vorbereitet wurde.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="205"/>
+        <location filename="../model/src/deform_setup.cpp" line="214"/>
         <source>The object has no mesh to deform.</source>
         <translation>Das Objekt hat kein Netz, das sich verformen ließe.</translation>
     </message>
@@ -854,7 +854,7 @@
         <translation>Die Pins konnten nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="228"/>
+        <location filename="../model/src/deform_setup.cpp" line="237"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>Die Verformung hat ungültige Punkte ergeben; sie wurde nicht angewendet.</translation>
     </message>
@@ -2566,7 +2566,7 @@
     <message>
         <location filename="../model/src/picture/picture_section.cpp" line="102"/>
         <location filename="../model/src/picture/picture_section.cpp" line="103"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="228"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="229"/>
         <source>the pictures</source>
         <translation>die Bilder</translation>
     </message>
@@ -2576,27 +2576,27 @@
         <translation>Bild %1 ist abgeschnitten</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="119"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="120"/>
         <source>picture %1&apos;s mesh has %2 vertices</source>
         <translation>das Netz von Bild %1 hat %2 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="128"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="129"/>
         <source>picture %1&apos;s mesh has a vertex outside the picture</source>
         <translation>das Netz von Bild %1 hat eine Ecke außerhalb des Bildes</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="135"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="136"/>
         <source>picture %1&apos;s mesh has no triangles</source>
         <translation>das Netz von Bild %1 hat keine Dreiecke</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="143"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="144"/>
         <source>picture %1&apos;s mesh names a vertex it does not have</source>
         <translation>das Netz von Bild %1 nennt eine Ecke, die es nicht hat</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="152"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="153"/>
         <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
         <translation>das Netz von Bild %1 hat ein umgeklapptes Dreieck oder eines ohne Fläche</translation>
     </message>
@@ -2606,42 +2606,42 @@
         <translation>Bild %1 ist %2 × %3 Pixel groß: %4</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="172"/>
         <source>picture %1 does not decode: %2</source>
         <translation>Bild %1 lässt sich nicht dekodieren: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="176"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="177"/>
         <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
         <translation>Bild %1 ist %2 × %3 Pixel groß, nicht %4 × %5 wie angegeben</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="188"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="189"/>
         <source>%1; the objects showing it are left without it</source>
         <translation>%1; die Objekte, die es zeigen, bleiben ohne Bild</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="200"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="201"/>
         <source>the object&apos;s picture</source>
         <translation>das Bild des Objekts</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="205"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="206"/>
         <source>the picture&apos;s place is out of range</source>
         <translation>die Lage des Bildes liegt außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="213"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="214"/>
         <source>the picture&apos;s pose has a point out of range</source>
         <translation>die Pose des Bildes hat einen Punkt außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="236"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="237"/>
         <source>an object shows picture %1, which the file does not hold</source>
         <translation>ein Objekt zeigt Bild %1, das die Datei nicht enthält</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="262"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="263"/>
         <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
         <translation>die Pose eines Bildes passt nicht zu seinem Netz; es wird in Ruhe gezeigt</translation>
     </message>
@@ -2761,7 +2761,7 @@
 <context>
     <name>PictureImport</name>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="127"/>
+        <location filename="../model/src/picture/openraster.cpp" line="126"/>
         <source>Its stack.xml does not describe an OpenRaster image.</source>
         <translation>Ihre stack.xml beschreibt kein OpenRaster-Bild.</translation>
     </message>
@@ -2771,82 +2771,82 @@
         <translation>Ihre stack.xml gibt einer Ebene eine ungültige Lage oder Deckkraft.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="140"/>
+        <location filename="../model/src/picture/openraster.cpp" line="142"/>
         <source>Its layer groups are nested too deeply.</source>
         <translation>Ihre Ebenengruppen sind zu tief verschachtelt.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="146"/>
+        <location filename="../model/src/picture/openraster.cpp" line="148"/>
         <source>Its stack.xml names a layer without a picture.</source>
         <translation>Ihre stack.xml nennt eine Ebene ohne Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="149"/>
+        <location filename="../model/src/picture/openraster.cpp" line="152"/>
         <source>It has more than %1 layers.</source>
         <translation>Sie hat mehr als %1 Ebenen.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="156"/>
+        <location filename="../model/src/picture/openraster.cpp" line="159"/>
         <source>Its stack.xml is malformed (line %1: %2).</source>
         <translation>Ihre stack.xml ist fehlerhaft (Zeile %1: %2).</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="161"/>
+        <location filename="../model/src/picture/openraster.cpp" line="164"/>
         <source>Its stack.xml is empty.</source>
         <translation>Ihre stack.xml ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="163"/>
+        <location filename="../model/src/picture/openraster.cpp" line="167"/>
         <source>Its stack of layers is empty.</source>
         <translation>Ihr Ebenenstapel ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="173"/>
+        <location filename="../model/src/picture/openraster.cpp" line="177"/>
         <source>The picture of its layer “%1” (%2) is missing.</source>
         <translation>Das Bild ihrer Ebene „%1“ (%2) fehlt.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="178"/>
+        <location filename="../model/src/picture/openraster.cpp" line="182"/>
         <source>The picture of its layer “%1” is larger than %2 MB.</source>
         <translation>Das Bild ihrer Ebene „%1“ ist größer als %2 MB.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="183"/>
+        <location filename="../model/src/picture/openraster.cpp" line="187"/>
         <source>The picture of its layer “%1” is damaged or cut short in the file.</source>
         <translation>Das Bild ihrer Ebene „%1“ ist in der Datei beschädigt oder abgeschnitten.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="192"/>
+        <location filename="../model/src/picture/openraster.cpp" line="196"/>
         <source>Its layer “%1”: %2</source>
         <translation>Ihre Ebene „%1“: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="211"/>
+        <location filename="../model/src/picture/openraster.cpp" line="216"/>
         <source>It is a zip archive, but not an OpenRaster picture.</source>
         <translation>Sie ist ein ZIP-Archiv, aber kein OpenRaster-Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="232"/>
+        <location filename="../model/src/picture/openraster.cpp" line="237"/>
         <source>It is not a zip archive, or it is damaged or cut short.</source>
         <translation>Sie ist kein ZIP-Archiv, oder sie ist beschädigt oder unvollständig.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="238"/>
+        <location filename="../model/src/picture/openraster.cpp" line="244"/>
         <source>It has no stack.xml: it is not an OpenRaster picture.</source>
         <translation>Sie hat keine stack.xml: Sie ist kein OpenRaster-Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="241"/>
+        <location filename="../model/src/picture/openraster.cpp" line="248"/>
         <source>Its stack.xml is larger than %1 MB.</source>
         <translation>Ihre stack.xml ist größer als %1 MB.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="244"/>
+        <location filename="../model/src/picture/openraster.cpp" line="252"/>
         <source>Its stack.xml is damaged or cut short.</source>
         <translation>Ihre stack.xml ist beschädigt oder unvollständig.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="263"/>
+        <location filename="../model/src/picture/openraster.cpp" line="272"/>
         <source>It has no visible layer.</source>
         <translation>Sie hat keine sichtbare Ebene.</translation>
     </message>
@@ -2886,23 +2886,23 @@
         <translation>Ihr Bild lässt sich nicht dekodieren: Die Datei ist beschädigt, unvollständig oder zu groß.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="93"/>
-        <location filename="../model/src/picture/picture_import.cpp" line="35"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="94"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="36"/>
         <source>It is empty.</source>
         <translation>Sie ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="101"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="102"/>
         <source>It holds a picture of a kind Finbook cannot read.</source>
         <translation>Sie enthält ein Bild einer Art, die Finbook nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="108"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="111"/>
         <source>Its picture cannot be decoded.</source>
         <translation>Ihr Bild lässt sich nicht dekodieren.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="114"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="118"/>
         <source>There is not enough memory to read it.</source>
         <translation>Es ist nicht genug Speicher da, um sie zu lesen.</translation>
     </message>
@@ -2912,8 +2912,8 @@
         <translation>Sie lässt sich nicht lesen (gibt es sie, und darf Finbook sie lesen?).</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_import.cpp" line="44"/>
-        <location filename="../model/src/picture/picture_import.cpp" line="48"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="45"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="49"/>
         <source>It is larger than %1 MB.</source>
         <translation>Sie ist größer als %1 MB.</translation>
     </message>
@@ -2923,38 +2923,38 @@
         <translation>Das Bild ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="44"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="184"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="45"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="196"/>
         <source>There is not enough memory for the picture.</source>
         <translation>Für das Bild ist nicht genug Speicher da.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="49"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="51"/>
         <source>The picture could not be encoded to be saved: %1</source>
         <translation>Das Bild ließ sich zum Speichern nicht kodieren: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="64"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
         <source>The picture&apos;s outline cannot be traced: %1</source>
         <translation>Der Umriss des Bildes lässt sich nicht nachzeichnen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="71"/>
         <source>The picture is fully transparent: nothing of it shows.</source>
         <translation>Das Bild ist ganz durchsichtig: Nichts davon ist zu sehen.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="75"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="83"/>
         <source>The picture&apos;s outline cannot be meshed: %1</source>
         <translation>Der Umriss des Bildes lässt sich nicht vernetzen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="169"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="178"/>
         <source>The object has no picture.</source>
         <translation>Das Objekt hat kein Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="179"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="189"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>Das posierte Bild ist zu groß, um es zu behalten (höchstens %1 Pixel breit und hoch).</translation>
     </message>
@@ -5066,119 +5066,119 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window.cpp" line="160"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="162"/>
+        <location filename="../ui/src/window/main_window.cpp" line="163"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="217"/>
+        <location filename="../ui/src/window/main_window.cpp" line="218"/>
         <source>Show Dr&amp;awing</source>
         <translation>Zeichnung anz&amp;eigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window.cpp" line="236"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window.cpp" line="239"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window.cpp" line="243"/>
         <source>Reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window.cpp" line="263"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="264"/>
+        <location filename="../ui/src/window/main_window.cpp" line="265"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window.cpp" line="272"/>
         <source>Palette</source>
         <translation>Palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="297"/>
+        <location filename="../ui/src/window/main_window.cpp" line="298"/>
         <source>Rotation </source>
         <translation>Drehung </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="301"/>
+        <location filename="../ui/src/window/main_window.cpp" line="302"/>
         <source>The view&apos;s rotation: the drawing is not changed. Shift+Space-drag on the canvas turns it freely; 4 and 6 turn it by 15°, 5 resets it, Shift+M mirrors it.</source>
         <translation>Die Drehung der Ansicht: die Zeichnung bleibt unverändert. Umschalt+Leertaste-Ziehen auf der Leinwand dreht sie frei; 4 und 6 drehen um 15°, 5 setzt zurück, Umschalt+M spiegelt.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="327"/>
+        <location filename="../ui/src/window/main_window.cpp" line="328"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>Die Referenz „%1“ kann nicht angezeigt werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="336"/>
+        <location filename="../ui/src/window/main_window.cpp" line="337"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="347"/>
+        <location filename="../ui/src/window/main_window.cpp" line="348"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="348"/>
+        <location filename="../ui/src/window/main_window.cpp" line="349"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="353"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="322"/>
+        <location filename="../ui/src/window/main_window.cpp" line="354"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="396"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="354"/>
+        <location filename="../ui/src/window/main_window.cpp" line="355"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="33"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook-Animationen (*.finbook);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="44"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="48"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="79"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="83"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="138"/>
         <source>Cannot Open File</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="169"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="173"/>
         <source>Cannot Save File</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="175"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="179"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="145"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Lesbare Teile von %1 geöffnet (%n Problem behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
@@ -5186,55 +5186,55 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="102"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="101"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="106"/>
         <source>Cannot Open the Example</source>
         <translation>Das Beispiel lässt sich nicht öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="107"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="111"/>
         <source>The example walk cycle: change it and save it as your own.</source>
         <translation>Der Beispiel-Laufzyklus: ändere ihn und speichere ihn als deinen eigenen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="234"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
         <source>Cannot Import Mesh</source>
         <translation>Netz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
         <source>Reading &quot;%1&quot;...</source>
         <translation>„%1“ wird gelesen …</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="271"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Import Picture</source>
         <translation>Bild importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="323"/>
         <source>Cannot Import Picture</source>
         <translation>Bild kann nicht importiert werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="348"/>
         <source>Imported &quot;%1&quot;: %n picture object(s).</source>
         <translation>
             <numerusform>„%1“ importiert: %n Bildobjekt.</numerusform>
@@ -5242,322 +5242,338 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="310"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="358"/>
+        <source>Pasted picture</source>
+        <translation>Eingefügtes Bild</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <source>Reading the pasted picture...</source>
+        <translation>Das eingefügte Bild wird gelesen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="371"/>
+        <source>Pasted a picture as an object.</source>
+        <translation>Ein Bild wurde als Objekt eingefügt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="384"/>
         <source>Damaged File</source>
         <translation>Beschädigte Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="311"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>„Trotzdem öffnen“ zeigt den noch lesbaren Inhalt als neue, ungespeicherte Animation an; die beschädigte Datei wird nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="314"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="388"/>
         <source>Open Anyway</source>
         <translation>Trotzdem öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="398"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="325"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="399"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>„%1“ hat ungespeicherte Änderungen. Vorher speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="331"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="405"/>
         <source>Open Animation</source>
         <translation>Animation öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="337"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="411"/>
         <source>Save Animation</source>
         <translation>Animation speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="338"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="412"/>
         <source>untitled.finbook</source>
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="62"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="63"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
         <source>Open Exa&amp;mple</source>
         <translation>Beis&amp;piel öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
         <source>&amp;Welcome...</source>
         <translation>&amp;Willkommen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="92"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="119"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
         <source>Import &amp;Picture...</source>
         <translation>Bil&amp;d importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
         <source>Pictures (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster stacks (*.ora);;All files (*)</source>
         <translation>Bilder (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster-Stapel (*.ora);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>Import Re&amp;ference...</source>
         <translation>&amp;Referenz importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <source>Cannot Import Reference</source>
         <translation>Referenz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="157"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="162"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="269"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
         <source>Rotate View &amp;Left</source>
         <translation>Ansicht nach &amp;links drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
         <source>Rotate View &amp;Right</source>
         <translation>Ansicht nach &amp;rechts drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>R&amp;eset View Rotation</source>
         <translation>Dre&amp;hung der Ansicht zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
         <source>Mirror Vie&amp;w</source>
         <translation>Ansicht sp&amp;iegeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="301"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
         <source>&amp;Camera View</source>
         <translation>Kamera&amp;ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="316"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Andere Ebenen ab&amp;dunkeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="314"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="323"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="333"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
         <source>&amp;Layer</source>
         <translation>Ebe&amp;ne</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="340"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="349"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="361"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="371"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="380"/>
         <source>Finbook &amp;Manual</source>
         <translation>Finbook-&amp;Handbuch</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="376"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="387"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="408"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="417"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="432"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="441"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="433"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="442"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -5582,13 +5598,13 @@
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>

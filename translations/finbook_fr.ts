@@ -563,7 +563,7 @@
         <translation>Garder le dessin pour cette image</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_commands.cpp" line="19"/>
+        <location filename="../model/src/picture/picture_commands.cpp" line="18"/>
         <source>Import Picture</source>
         <translation>Importer une image</translation>
     </message>
@@ -819,27 +819,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="107"/>
+        <location filename="../model/src/deform_setup.cpp" line="116"/>
         <source>The object has no strokes to deform.</source>
         <translation>L&apos;objet n&apos;a aucun trait à déformer.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="114"/>
+        <location filename="../model/src/deform_setup.cpp" line="123"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Impossible de mailler ce dessin pour le déformer&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="146"/>
+        <location filename="../model/src/deform_setup.cpp" line="155"/>
         <source>Cancelled.</source>
         <translation>Annulé.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="197"/>
+        <location filename="../model/src/deform_setup.cpp" line="206"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>La cage a changé pendant sa préparation.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="205"/>
+        <location filename="../model/src/deform_setup.cpp" line="214"/>
         <source>The object has no mesh to deform.</source>
         <translation>L&apos;objet n&apos;a pas de maillage à déformer.</translation>
     </message>
@@ -854,7 +854,7 @@
         <translation>Le calcul de la déformation par les épingles a échoué&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="228"/>
+        <location filename="../model/src/deform_setup.cpp" line="237"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>La déformation a produit des points invalides&#xa0;; elle n&apos;a pas été appliquée.</translation>
     </message>
@@ -2566,7 +2566,7 @@
     <message>
         <location filename="../model/src/picture/picture_section.cpp" line="102"/>
         <location filename="../model/src/picture/picture_section.cpp" line="103"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="228"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="229"/>
         <source>the pictures</source>
         <translation>les images</translation>
     </message>
@@ -2576,27 +2576,27 @@
         <translation>l’image %1 est tronquée</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="119"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="120"/>
         <source>picture %1&apos;s mesh has %2 vertices</source>
         <translation>le maillage de l’image %1 a %2 sommets</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="128"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="129"/>
         <source>picture %1&apos;s mesh has a vertex outside the picture</source>
         <translation>le maillage de l’image %1 a un sommet hors de l’image</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="135"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="136"/>
         <source>picture %1&apos;s mesh has no triangles</source>
         <translation>le maillage de l’image %1 n’a pas de triangle</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="143"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="144"/>
         <source>picture %1&apos;s mesh names a vertex it does not have</source>
         <translation>le maillage de l’image %1 désigne un sommet qu’il n’a pas</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="152"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="153"/>
         <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
         <translation>le maillage de l’image %1 a un triangle retourné ou sans aire</translation>
     </message>
@@ -2606,42 +2606,42 @@
         <translation>l’image %1 fait %2 × %3 pixels : %4</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="172"/>
         <source>picture %1 does not decode: %2</source>
         <translation>l’image %1 ne se décode pas : %2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="176"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="177"/>
         <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
         <translation>l’image %1 fait %2 × %3 pixels, et non les %4 × %5 annoncés</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="188"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="189"/>
         <source>%1; the objects showing it are left without it</source>
         <translation>%1 ; les objets qui la montrent restent sans elle</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="200"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="201"/>
         <source>the object&apos;s picture</source>
         <translation>l’image de l’objet</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="205"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="206"/>
         <source>the picture&apos;s place is out of range</source>
         <translation>la position de l’image est hors limites</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="213"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="214"/>
         <source>the picture&apos;s pose has a point out of range</source>
         <translation>la pose de l’image a un point hors limites</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="236"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="237"/>
         <source>an object shows picture %1, which the file does not hold</source>
         <translation>un objet montre l’image %1, que le fichier ne contient pas</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="262"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="263"/>
         <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
         <translation>la pose d’une image ne correspond pas à son maillage ; elle est montrée au repos</translation>
     </message>
@@ -2761,7 +2761,7 @@
 <context>
     <name>PictureImport</name>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="127"/>
+        <location filename="../model/src/picture/openraster.cpp" line="126"/>
         <source>Its stack.xml does not describe an OpenRaster image.</source>
         <translation>Son stack.xml ne décrit pas une image OpenRaster.</translation>
     </message>
@@ -2771,82 +2771,82 @@
         <translation>Son stack.xml donne à un calque une position ou une opacité invalide.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="140"/>
+        <location filename="../model/src/picture/openraster.cpp" line="142"/>
         <source>Its layer groups are nested too deeply.</source>
         <translation>Ses groupes de calques sont imbriqués trop profondément.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="146"/>
+        <location filename="../model/src/picture/openraster.cpp" line="148"/>
         <source>Its stack.xml names a layer without a picture.</source>
         <translation>Son stack.xml nomme un calque sans image.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="149"/>
+        <location filename="../model/src/picture/openraster.cpp" line="152"/>
         <source>It has more than %1 layers.</source>
         <translation>Il a plus de %1 calques.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="156"/>
+        <location filename="../model/src/picture/openraster.cpp" line="159"/>
         <source>Its stack.xml is malformed (line %1: %2).</source>
         <translation>Son stack.xml est mal formé (ligne %1 : %2).</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="161"/>
+        <location filename="../model/src/picture/openraster.cpp" line="164"/>
         <source>Its stack.xml is empty.</source>
         <translation>Son stack.xml est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="163"/>
+        <location filename="../model/src/picture/openraster.cpp" line="167"/>
         <source>Its stack of layers is empty.</source>
         <translation>Sa pile de calques est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="173"/>
+        <location filename="../model/src/picture/openraster.cpp" line="177"/>
         <source>The picture of its layer “%1” (%2) is missing.</source>
         <translation>L’image de son calque « %1 » (%2) manque.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="178"/>
+        <location filename="../model/src/picture/openraster.cpp" line="182"/>
         <source>The picture of its layer “%1” is larger than %2 MB.</source>
         <translation>L’image de son calque « %1 » dépasse %2 Mo.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="183"/>
+        <location filename="../model/src/picture/openraster.cpp" line="187"/>
         <source>The picture of its layer “%1” is damaged or cut short in the file.</source>
         <translation>L’image de son calque « %1 » est endommagée ou tronquée dans le fichier.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="192"/>
+        <location filename="../model/src/picture/openraster.cpp" line="196"/>
         <source>Its layer “%1”: %2</source>
         <translation>Son calque « %1 » : %2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="211"/>
+        <location filename="../model/src/picture/openraster.cpp" line="216"/>
         <source>It is a zip archive, but not an OpenRaster picture.</source>
         <translation>C’est une archive zip, mais pas une image OpenRaster.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="232"/>
+        <location filename="../model/src/picture/openraster.cpp" line="237"/>
         <source>It is not a zip archive, or it is damaged or cut short.</source>
         <translation>Ce n’est pas une archive zip, ou elle est endommagée ou tronquée.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="238"/>
+        <location filename="../model/src/picture/openraster.cpp" line="244"/>
         <source>It has no stack.xml: it is not an OpenRaster picture.</source>
         <translation>Elle n’a pas de stack.xml : ce n’est pas une image OpenRaster.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="241"/>
+        <location filename="../model/src/picture/openraster.cpp" line="248"/>
         <source>Its stack.xml is larger than %1 MB.</source>
         <translation>Son stack.xml dépasse %1 Mo.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="244"/>
+        <location filename="../model/src/picture/openraster.cpp" line="252"/>
         <source>Its stack.xml is damaged or cut short.</source>
         <translation>Son stack.xml est endommagé ou tronqué.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="263"/>
+        <location filename="../model/src/picture/openraster.cpp" line="272"/>
         <source>It has no visible layer.</source>
         <translation>Elle n’a aucun calque visible.</translation>
     </message>
@@ -2886,23 +2886,23 @@
         <translation>Son image ne peut pas être décodée : le fichier est endommagé, tronqué ou trop grand.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="93"/>
-        <location filename="../model/src/picture/picture_import.cpp" line="35"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="94"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="36"/>
         <source>It is empty.</source>
         <translation>Il est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="101"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="102"/>
         <source>It holds a picture of a kind Finbook cannot read.</source>
         <translation>Il contient une image d’un type que Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="108"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="111"/>
         <source>Its picture cannot be decoded.</source>
         <translation>Son image ne peut pas être décodée.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="114"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="118"/>
         <source>There is not enough memory to read it.</source>
         <translation>Il n’y a pas assez de mémoire pour le lire.</translation>
     </message>
@@ -2912,8 +2912,8 @@
         <translation>Il ne peut pas être lu (existe-t-il, et Finbook a-t-il le droit de le lire ?).</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_import.cpp" line="44"/>
-        <location filename="../model/src/picture/picture_import.cpp" line="48"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="45"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="49"/>
         <source>It is larger than %1 MB.</source>
         <translation>Il dépasse %1 Mo.</translation>
     </message>
@@ -2923,38 +2923,38 @@
         <translation>L’image est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="44"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="184"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="45"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="196"/>
         <source>There is not enough memory for the picture.</source>
         <translation>Il n’y a pas assez de mémoire pour l’image.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="49"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="51"/>
         <source>The picture could not be encoded to be saved: %1</source>
         <translation>L’image n’a pas pu être encodée pour être enregistrée : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="64"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
         <source>The picture&apos;s outline cannot be traced: %1</source>
         <translation>Le contour de l’image ne peut pas être tracé : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="71"/>
         <source>The picture is fully transparent: nothing of it shows.</source>
         <translation>L’image est entièrement transparente : rien n’en paraît.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="75"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="83"/>
         <source>The picture&apos;s outline cannot be meshed: %1</source>
         <translation>Le contour de l’image ne peut pas être maillé : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="169"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="178"/>
         <source>The object has no picture.</source>
         <translation>L’objet n’a pas d’image.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="179"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="189"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>L’image posée est trop grande pour être gardée (au plus %1 pixels de large et de haut).</translation>
     </message>
@@ -5066,88 +5066,88 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window.cpp" line="160"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="162"/>
+        <location filename="../ui/src/window/main_window.cpp" line="163"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="217"/>
+        <location filename="../ui/src/window/main_window.cpp" line="218"/>
         <source>Show Dr&amp;awing</source>
         <translation>&amp;Afficher le dessin</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window.cpp" line="236"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window.cpp" line="239"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window.cpp" line="243"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window.cpp" line="263"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="264"/>
+        <location filename="../ui/src/window/main_window.cpp" line="265"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window.cpp" line="272"/>
         <source>Palette</source>
         <translation>Palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="297"/>
+        <location filename="../ui/src/window/main_window.cpp" line="298"/>
         <source>Rotation </source>
         <translation>Rotation </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="301"/>
+        <location filename="../ui/src/window/main_window.cpp" line="302"/>
         <source>The view&apos;s rotation: the drawing is not changed. Shift+Space-drag on the canvas turns it freely; 4 and 6 turn it by 15°, 5 resets it, Shift+M mirrors it.</source>
         <translation>La rotation de la vue : le dessin ne change pas. Maj+Espace et glisser sur la toile la tourne librement ; 4 et 6 la tournent de 15°, 5 la remet droite, Maj+M la retourne.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="327"/>
+        <location filename="../ui/src/window/main_window.cpp" line="328"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>La référence « %1 » ne peut pas être affichée : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="336"/>
+        <location filename="../ui/src/window/main_window.cpp" line="337"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="347"/>
+        <location filename="../ui/src/window/main_window.cpp" line="348"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="348"/>
+        <location filename="../ui/src/window/main_window.cpp" line="349"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="353"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="322"/>
+        <location filename="../ui/src/window/main_window.cpp" line="354"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="396"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="354"/>
+        <location filename="../ui/src/window/main_window.cpp" line="355"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -5172,33 +5172,33 @@
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="33"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Animations Finbook (*.finbook);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="44"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="48"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="79"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="83"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="138"/>
         <source>Cannot Open File</source>
         <translation>Impossible d&apos;ouvrir le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="169"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="173"/>
         <source>Cannot Save File</source>
         <translation>Impossible d&apos;enregistrer le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="175"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="179"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="145"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Ce qui était lisible de %1 a été ouvert (%n problème réparé)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
@@ -5206,55 +5206,55 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="102"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="101"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="106"/>
         <source>Cannot Open the Example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="107"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="111"/>
         <source>The example walk cycle: change it and save it as your own.</source>
         <translation>L&apos;exemple de cycle de marche : modifiez-le et enregistrez-le comme le vôtre.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="234"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>No recent files</source>
         <translation>Aucun fichier récent</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
         <source>Cannot Import Mesh</source>
         <translation>Impossible d&apos;importer le maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
         <source>Reading &quot;%1&quot;...</source>
         <translation>Lecture de « %1 »…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="271"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Import Picture</source>
         <translation>Importer une image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="323"/>
         <source>Cannot Import Picture</source>
         <translation>Impossible d’importer l’image</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="348"/>
         <source>Imported &quot;%1&quot;: %n picture object(s).</source>
         <translation>
             <numerusform>« %1 » importé : %n objet image.</numerusform>
@@ -5262,333 +5262,349 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="310"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="358"/>
+        <source>Pasted picture</source>
+        <translation>Image collée</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <source>Reading the pasted picture...</source>
+        <translation>Lecture de l’image collée...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="371"/>
+        <source>Pasted a picture as an object.</source>
+        <translation>Une image a été collée comme objet.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="384"/>
         <source>Damaged File</source>
         <translation>Fichier endommagé</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="311"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>«&#xa0;Ouvrir quand même&#xa0;» affiche ce qui reste lisible dans une nouvelle animation non enregistrée&#xa0;; le fichier endommagé n&apos;est pas modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="314"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="388"/>
         <source>Open Anyway</source>
         <translation>Ouvrir quand même</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="398"/>
         <source>Unsaved Changes</source>
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="325"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="399"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>«&#xa0;%1&#xa0;» contient des modifications non enregistrées. Les enregistrer avant de continuer&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="331"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="405"/>
         <source>Open Animation</source>
         <translation>Ouvrir une animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="337"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="411"/>
         <source>Save Animation</source>
         <translation>Enregistrer l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="338"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="412"/>
         <source>untitled.finbook</source>
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="62"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="63"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
         <source>Open Exa&amp;mple</source>
         <translation>Ouvrir l&apos;e&amp;xemple</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
         <source>&amp;Welcome...</source>
         <translation>&amp;Bienvenue...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="92"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="119"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
         <source>Import &amp;Picture...</source>
         <translation>Importer une ima&amp;ge...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
         <source>Pictures (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster stacks (*.ora);;All files (*)</source>
         <translation>Images (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;Piles OpenRaster (*.ora);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>Import Re&amp;ference...</source>
         <translation>Importer une ré&amp;férence...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <source>Cannot Import Reference</source>
         <translation>Impossible d’importer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="157"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="162"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="269"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
         <source>Rotate View &amp;Left</source>
         <translation>Tourner la vue à &amp;gauche</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
         <source>Rotate View &amp;Right</source>
         <translation>Tourner la vue à &amp;droite</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>R&amp;eset View Rotation</source>
         <translation>Ré&amp;initialiser la rotation de la vue</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
         <source>Mirror Vie&amp;w</source>
         <translation>Vue en mir&amp;oir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="301"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
         <source>&amp;Camera View</source>
         <translation>Vue &amp;caméra</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="316"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Atténuer les a&amp;utres calques</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="314"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="323"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="333"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
         <source>&amp;Layer</source>
         <translation>&amp;Calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="340"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="349"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="361"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="371"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="380"/>
         <source>Finbook &amp;Manual</source>
         <translation>&amp;Manuel de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="376"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="387"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="408"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="417"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="432"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="441"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="433"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="442"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Rétablir</translation>

@@ -563,7 +563,7 @@
         <translation>絵を独立させる</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_commands.cpp" line="19"/>
+        <location filename="../model/src/picture/picture_commands.cpp" line="18"/>
         <source>Import Picture</source>
         <translation>画像を読み込む</translation>
     </message>
@@ -819,27 +819,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="107"/>
+        <location filename="../model/src/deform_setup.cpp" line="116"/>
         <source>The object has no strokes to deform.</source>
         <translation>このオブジェクトには変形できるストロークがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="114"/>
+        <location filename="../model/src/deform_setup.cpp" line="123"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>この絵から変形用のメッシュを作成できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="146"/>
+        <location filename="../model/src/deform_setup.cpp" line="155"/>
         <source>Cancelled.</source>
         <translation>キャンセルしました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="197"/>
+        <location filename="../model/src/deform_setup.cpp" line="206"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>準備中にケージが変更されました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="205"/>
+        <location filename="../model/src/deform_setup.cpp" line="214"/>
         <source>The object has no mesh to deform.</source>
         <translation>このオブジェクトには変形できるメッシュがありません。</translation>
     </message>
@@ -854,7 +854,7 @@
         <translation>ピンによる変形を計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="228"/>
+        <location filename="../model/src/deform_setup.cpp" line="237"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>変形によって無効な点が生じたため、適用しませんでした。</translation>
     </message>
@@ -2557,7 +2557,7 @@
     <message>
         <location filename="../model/src/picture/picture_section.cpp" line="102"/>
         <location filename="../model/src/picture/picture_section.cpp" line="103"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="228"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="229"/>
         <source>the pictures</source>
         <translation>画像</translation>
     </message>
@@ -2567,27 +2567,27 @@
         <translation>画像 %1 が途中で切れています</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="119"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="120"/>
         <source>picture %1&apos;s mesh has %2 vertices</source>
         <translation>画像 %1 のメッシュの頂点数が %2 です</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="128"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="129"/>
         <source>picture %1&apos;s mesh has a vertex outside the picture</source>
         <translation>画像 %1 のメッシュに画像の外の頂点があります</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="135"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="136"/>
         <source>picture %1&apos;s mesh has no triangles</source>
         <translation>画像 %1 のメッシュに三角形がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="143"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="144"/>
         <source>picture %1&apos;s mesh names a vertex it does not have</source>
         <translation>画像 %1 のメッシュが存在しない頂点を参照しています</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="152"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="153"/>
         <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
         <translation>画像 %1 のメッシュに裏返った三角形か面積のない三角形があります</translation>
     </message>
@@ -2597,42 +2597,42 @@
         <translation>画像 %1 は %2 × %3 ピクセルです：%4</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="172"/>
         <source>picture %1 does not decode: %2</source>
         <translation>画像 %1 をデコードできません：%2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="176"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="177"/>
         <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
         <translation>画像 %1 は %2 × %3 ピクセルで、記載の %4 × %5 ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="188"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="189"/>
         <source>%1; the objects showing it are left without it</source>
         <translation>%1。この画像を表示するオブジェクトは画像なしで開きます</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="200"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="201"/>
         <source>the object&apos;s picture</source>
         <translation>オブジェクトの画像</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="205"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="206"/>
         <source>the picture&apos;s place is out of range</source>
         <translation>画像の位置が範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="213"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="214"/>
         <source>the picture&apos;s pose has a point out of range</source>
         <translation>画像のポーズに範囲外の点があります</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="236"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="237"/>
         <source>an object shows picture %1, which the file does not hold</source>
         <translation>オブジェクトがファイルにない画像 %1 を表示しています</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="262"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="263"/>
         <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
         <translation>画像のポーズがメッシュと合いません。レストの状態で表示します</translation>
     </message>
@@ -2751,7 +2751,7 @@
 <context>
     <name>PictureImport</name>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="127"/>
+        <location filename="../model/src/picture/openraster.cpp" line="126"/>
         <source>Its stack.xml does not describe an OpenRaster image.</source>
         <translation>stack.xml が OpenRaster 画像を記述していません。</translation>
     </message>
@@ -2761,82 +2761,82 @@
         <translation>stack.xml でレイヤーの位置か不透明度が不正です。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="140"/>
+        <location filename="../model/src/picture/openraster.cpp" line="142"/>
         <source>Its layer groups are nested too deeply.</source>
         <translation>レイヤーグループの入れ子が深すぎます。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="146"/>
+        <location filename="../model/src/picture/openraster.cpp" line="148"/>
         <source>Its stack.xml names a layer without a picture.</source>
         <translation>stack.xml に画像のないレイヤーがあります。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="149"/>
+        <location filename="../model/src/picture/openraster.cpp" line="152"/>
         <source>It has more than %1 layers.</source>
         <translation>レイヤーが %1 を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="156"/>
+        <location filename="../model/src/picture/openraster.cpp" line="159"/>
         <source>Its stack.xml is malformed (line %1: %2).</source>
         <translation>stack.xml の形式が正しくありません（%1 行目: %2）。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="161"/>
+        <location filename="../model/src/picture/openraster.cpp" line="164"/>
         <source>Its stack.xml is empty.</source>
         <translation>stack.xml が空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="163"/>
+        <location filename="../model/src/picture/openraster.cpp" line="167"/>
         <source>Its stack of layers is empty.</source>
         <translation>レイヤーのスタックが空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="173"/>
+        <location filename="../model/src/picture/openraster.cpp" line="177"/>
         <source>The picture of its layer “%1” (%2) is missing.</source>
         <translation>レイヤー「%1」の画像（%2）がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="178"/>
+        <location filename="../model/src/picture/openraster.cpp" line="182"/>
         <source>The picture of its layer “%1” is larger than %2 MB.</source>
         <translation>レイヤー「%1」の画像が %2 MB を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="183"/>
+        <location filename="../model/src/picture/openraster.cpp" line="187"/>
         <source>The picture of its layer “%1” is damaged or cut short in the file.</source>
         <translation>レイヤー「%1」の画像がファイル内で壊れているか途中で切れています。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="192"/>
+        <location filename="../model/src/picture/openraster.cpp" line="196"/>
         <source>Its layer “%1”: %2</source>
         <translation>レイヤー「%1」: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="211"/>
+        <location filename="../model/src/picture/openraster.cpp" line="216"/>
         <source>It is a zip archive, but not an OpenRaster picture.</source>
         <translation>zip アーカイブですが、OpenRaster 画像ではありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="232"/>
+        <location filename="../model/src/picture/openraster.cpp" line="237"/>
         <source>It is not a zip archive, or it is damaged or cut short.</source>
         <translation>zip アーカイブではないか、破損しているか途中で切れています。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="238"/>
+        <location filename="../model/src/picture/openraster.cpp" line="244"/>
         <source>It has no stack.xml: it is not an OpenRaster picture.</source>
         <translation>stack.xml がありません。OpenRaster 画像ではありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="241"/>
+        <location filename="../model/src/picture/openraster.cpp" line="248"/>
         <source>Its stack.xml is larger than %1 MB.</source>
         <translation>stack.xml が %1 MB を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="244"/>
+        <location filename="../model/src/picture/openraster.cpp" line="252"/>
         <source>Its stack.xml is damaged or cut short.</source>
         <translation>stack.xml が破損しているか途中で切れています。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/openraster.cpp" line="263"/>
+        <location filename="../model/src/picture/openraster.cpp" line="272"/>
         <source>It has no visible layer.</source>
         <translation>表示されるレイヤーがありません。</translation>
     </message>
@@ -2876,23 +2876,23 @@
         <translation>画像をデコードできません。ファイルが破損しているか、途中で切れているか、大きすぎます。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="93"/>
-        <location filename="../model/src/picture/picture_import.cpp" line="35"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="94"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="36"/>
         <source>It is empty.</source>
         <translation>空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="101"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="102"/>
         <source>It holds a picture of a kind Finbook cannot read.</source>
         <translation>Finbook が読めない種類の画像です。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="108"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="111"/>
         <source>Its picture cannot be decoded.</source>
         <translation>画像をデコードできません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_decode.cpp" line="114"/>
+        <location filename="../model/src/picture/picture_decode.cpp" line="118"/>
         <source>There is not enough memory to read it.</source>
         <translation>読み込むためのメモリが足りません。</translation>
     </message>
@@ -2902,8 +2902,8 @@
         <translation>読み込めません（ファイルは存在し、Finbook に読み取り権限がありますか？）。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_import.cpp" line="44"/>
-        <location filename="../model/src/picture/picture_import.cpp" line="48"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="45"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="49"/>
         <source>It is larger than %1 MB.</source>
         <translation>%1 MB を超えています。</translation>
     </message>
@@ -2913,38 +2913,38 @@
         <translation>画像が空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="44"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="184"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="45"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="196"/>
         <source>There is not enough memory for the picture.</source>
         <translation>画像のためのメモリが足りません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="49"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="51"/>
         <source>The picture could not be encoded to be saved: %1</source>
         <translation>保存用に画像をエンコードできませんでした：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="64"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
         <source>The picture&apos;s outline cannot be traced: %1</source>
         <translation>画像の輪郭を抽出できません：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="71"/>
         <source>The picture is fully transparent: nothing of it shows.</source>
         <translation>画像が完全に透明で、何も見えません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="75"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="83"/>
         <source>The picture&apos;s outline cannot be meshed: %1</source>
         <translation>画像の輪郭をメッシュにできません：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="169"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="178"/>
         <source>The object has no picture.</source>
         <translation>オブジェクトに画像がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="179"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="189"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>ポーズをつけた画像が大きすぎて保持できません（幅と高さは最大 %1 ピクセル）。</translation>
     </message>
@@ -5047,88 +5047,88 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window.cpp" line="160"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="162"/>
+        <location filename="../ui/src/window/main_window.cpp" line="163"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="217"/>
+        <location filename="../ui/src/window/main_window.cpp" line="218"/>
         <source>Show Dr&amp;awing</source>
         <translation>表示する絵(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window.cpp" line="236"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window.cpp" line="239"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window.cpp" line="243"/>
         <source>Reference</source>
         <translation>参照</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window.cpp" line="263"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="264"/>
+        <location filename="../ui/src/window/main_window.cpp" line="265"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window.cpp" line="272"/>
         <source>Palette</source>
         <translation>パレット</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="297"/>
+        <location filename="../ui/src/window/main_window.cpp" line="298"/>
         <source>Rotation </source>
         <translation>回転 </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="301"/>
+        <location filename="../ui/src/window/main_window.cpp" line="302"/>
         <source>The view&apos;s rotation: the drawing is not changed. Shift+Space-drag on the canvas turns it freely; 4 and 6 turn it by 15°, 5 resets it, Shift+M mirrors it.</source>
         <translation>表示の回転です。絵は変わりません。キャンバス上で Shift+Space ドラッグで自由に回転、4 と 6 で 15° ずつ回転、5 で元に戻し、Shift+M で左右反転します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="327"/>
+        <location filename="../ui/src/window/main_window.cpp" line="328"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>参照「%1」を表示できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="336"/>
+        <location filename="../ui/src/window/main_window.cpp" line="337"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="347"/>
+        <location filename="../ui/src/window/main_window.cpp" line="348"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="348"/>
+        <location filename="../ui/src/window/main_window.cpp" line="349"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="353"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="322"/>
+        <location filename="../ui/src/window/main_window.cpp" line="354"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="396"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="354"/>
+        <location filename="../ui/src/window/main_window.cpp" line="355"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -5153,421 +5153,437 @@
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="33"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook アニメーション (*.finbook);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="44"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="48"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="79"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="83"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="138"/>
         <source>Cannot Open File</source>
         <translation>ファイルを開けません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="169"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="173"/>
         <source>Cannot Save File</source>
         <translation>ファイルを保存できません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="175"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="179"/>
         <source>Saved %1</source>
         <translation>%1 を保存しました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="145"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>%1 の読み取れた部分を開きました（%n 件の問題を修復）。新しい名前で保存してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="102"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="101"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="106"/>
         <source>Cannot Open the Example</source>
         <translation>見本を開けません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="107"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="111"/>
         <source>The example walk cycle: change it and save it as your own.</source>
         <translation>見本の歩きサイクルです。変更して自分のものとして保存できます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="234"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>No recent files</source>
         <translation>最近使ったファイルはありません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
         <source>Cannot Import Mesh</source>
         <translation>メッシュをインポートできません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
         <source>Reading &quot;%1&quot;...</source>
         <translation>「%1」を読み込んでいます…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="271"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Import Picture</source>
         <translation>画像を読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="323"/>
         <source>Cannot Import Picture</source>
         <translation>画像を読み込めません</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="348"/>
         <source>Imported &quot;%1&quot;: %n picture object(s).</source>
         <translation>
             <numerusform>「%1」を読み込みました：画像オブジェクト %n 個。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="310"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="358"/>
+        <source>Pasted picture</source>
+        <translation>貼り付けた画像</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <source>Reading the pasted picture...</source>
+        <translation>貼り付けた画像を読み込んでいます...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="371"/>
+        <source>Pasted a picture as an object.</source>
+        <translation>画像をオブジェクトとして貼り付けました。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="384"/>
         <source>Damaged File</source>
         <translation>破損したファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="311"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>「このまま開く」を選ぶと、まだ読み取れる部分を未保存の新しいアニメーションとして表示します。破損したファイルは変更されません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="314"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="388"/>
         <source>Open Anyway</source>
         <translation>このまま開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="398"/>
         <source>Unsaved Changes</source>
         <translation>未保存の変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="325"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="399"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>「%1」には保存されていない変更があります。続ける前に保存しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="331"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="405"/>
         <source>Open Animation</source>
         <translation>アニメーションを開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="337"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="411"/>
         <source>Save Animation</source>
         <translation>アニメーションを保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="338"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="412"/>
         <source>untitled.finbook</source>
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="62"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="63"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
         <source>Open Exa&amp;mple</source>
         <translation>見本を開く(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
         <source>&amp;Welcome...</source>
         <translation>ようこそ(&amp;W)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="92"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="119"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
         <source>Import &amp;Picture...</source>
         <translation>画像を読み込む(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
         <source>Pictures (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster stacks (*.ora);;All files (*)</source>
         <translation>画像 (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster スタック (*.ora);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>Import Re&amp;ference...</source>
         <translation>参照を読み込む(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <source>Cannot Import Reference</source>
         <translation>参照を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="157"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="162"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="269"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
         <source>Rotate View &amp;Left</source>
         <translation>表示を左に回転(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
         <source>Rotate View &amp;Right</source>
         <translation>表示を右に回転(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>R&amp;eset View Rotation</source>
         <translation>表示の回転をリセット(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
         <source>Mirror Vie&amp;w</source>
         <translation>表示を左右反転(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="301"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
         <source>&amp;Camera View</source>
         <translation>カメラビュー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="316"/>
         <source>&amp;Dim Other Layers</source>
         <translation>他のレイヤーを薄く表示(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="314"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="323"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="333"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
         <source>&amp;Layer</source>
         <translation>レイヤー(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="340"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="349"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="361"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="371"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="380"/>
         <source>Finbook &amp;Manual</source>
         <translation>Finbook マニュアル(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="376"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="387"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="408"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="417"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="432"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="441"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="433"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="442"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>やり直す</translation>

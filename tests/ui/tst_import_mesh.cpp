@@ -5,8 +5,11 @@
 
 #include <finbook/model/cage/cage_setup.h>
 #include <finbook/model/document.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/ui/cage/cage_actions.h>
 
+#include <QAction>
+#include <QClipboard>
 #include <QMimeData>
 #include <QPainter>
 #include <QTemporaryDir>
@@ -21,6 +24,7 @@ private slots:
     void offMeshBecomesAnObject();
     void badMeshIsReportedAndChangesNothing();
     void picturesComeInByMenuAndByDrop();
+    void pastedPictureBecomesAnObject();
 
 private:
     std::unique_ptr<test::IsolatedSettings> m_settings;
@@ -115,6 +119,31 @@ void TestImportMesh::picturesComeInByMenuAndByDrop()
     QCOMPARE(window.errors.size(), 1);
     QVERIFY(window.errors.front().contains(QStringLiteral("notes.png")));
     QCOMPARE(int(doc->frameAt(0).groups.size()), objects + 1);
+}
+
+// Edit → Paste with a picture on the clipboard (as Krita or a browser put it there).
+void TestImportMesh::pastedPictureBecomesAnObject()
+{
+    QuietWindow window;
+    model::Document *doc = window.document();
+    QImage picture(64, 48, QImage::Format_ARGB32_Premultiplied);
+    picture.fill(QColor(200, 60, 40));
+    QApplication::clipboard()->setImage(picture);
+    QAction *paste = window.findChild<QAction *>(QStringLiteral("edit.paste"));
+    QVERIFY(paste);
+    QVERIFY(paste->isEnabled());
+    const int objects = int(doc->frameAt(0).groups.size());
+    paste->trigger();
+    QCOMPARE(int(doc->frameAt(0).groups.size()), objects + 1);
+    const model::StrokeGroup &g = doc->frameAt(0).groups.back();
+    QVERIFY(g.picture);
+    QCOMPARE(g.picture->data->image.size(), picture.size());
+    // Centred on the page when the mouse is not over the canvas.
+    const QSizeF page(doc->settings().canvasSize);
+    QCOMPARE(g.picture->restRect().center(), QRectF(QPointF(0, 0), page).center());
+    doc->undoStack()->undo();
+    QCOMPARE(int(doc->frameAt(0).groups.size()), objects);
+    QApplication::clipboard()->clear();
 }
 
 void TestImportMesh::badMeshIsReportedAndChangesNothing()

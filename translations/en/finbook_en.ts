@@ -190,7 +190,7 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../ui/src/window/main_window_files.cpp" line="141"/>
+        <location filename="../../ui/src/window/main_window_files.cpp" line="145"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Opened what was readable of %1 (%n problem repaired); save it under a new name.</numerusform>
@@ -198,7 +198,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/src/window/main_window_files.cpp" line="294"/>
+        <location filename="../../ui/src/window/main_window_files.cpp" line="348"/>
         <source>Imported &quot;%1&quot;: %n picture object(s).</source>
         <translation>
             <numerusform>Imported &quot;%1&quot;: %n picture object.</numerusform>

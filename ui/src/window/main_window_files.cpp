@@ -299,18 +299,17 @@ void MainWindow::dropEvent(QDropEvent *event)
     }
 }
 
-bool MainWindow::importPicture(const QString &path)
+bool MainWindow::addPictureObjects(
+    const std::function<Expected<std::vector<model::StrokeGroup>, QString>()> &work,
+    const QString &reading, const QString &title, const std::function<QString(int)> &done)
 {
     // Reading, tracing and meshing a large picture takes a while: on a worker, the window
     // kept painting behind a modal progress dialog.
     auto result =
         std::make_shared<Expected<std::vector<model::StrokeGroup>, QString>>(unexpected(QString()));
-    const QSizeF page(m_doc->settings().canvasSize);
-    QThread *worker = QThread::create(
-        [result, path, page] { *result = model::pictureObjectsFromFile(path, page); });
-    QProgressDialog progress(tr("Reading \"%1\"...").arg(QFileInfo(path).fileName()), QString(), 0,
-                             0, this);
-    progress.setWindowTitle(tr("Import Picture"));
+    QThread *worker = QThread::create([result, work] { *result = work(); });
+    QProgressDialog progress(reading, QString(), 0, 0, this);
+    progress.setWindowTitle(title);
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(0);
     progress.setCancelButton(nullptr);
@@ -331,12 +330,45 @@ bool MainWindow::importPicture(const QString &path)
         return false;
     }
     const model::Id top = command->objectIds().back();
+    const int count = int(command->objectIds().size());
     m_doc->undoStack()->push(command);
     m_state->setCurrentGroupId(top);
-    statusBar()->showMessage(
-        tr("Imported \"%1\": %n picture object(s).", nullptr, int(command->objectIds().size()))
-            .arg(QFileInfo(path).fileName()));
+    statusBar()->showMessage(done(count));
     return true;
+}
+
+bool MainWindow::importPicture(const QString &path)
+{
+    const QSizeF page(m_doc->settings().canvasSize);
+    const QString name = QFileInfo(path).fileName();
+    return addPictureObjects(
+        [path, page] { return model::pictureObjectsFromFile(path, page); },
+        tr("Reading \"%1\"...").arg(name), tr("Import Picture"),
+        [name](int count) {
+            return tr("Imported \"%1\": %n picture object(s).", nullptr, count).arg(name);
+        });
+}
+
+bool MainWindow::pastePicture(const QImage &image, std::optional<QPointF> at)
+{
+    if (image.isNull())
+        return false;
+    const QPointF centre =
+        at ? *at : QRectF(QPointF(0, 0), QSizeF(m_doc->settings().canvasSize)).center();
+    const QString name = tr("Pasted picture");
+    return addPictureObjects(
+        [image, centre, name]() -> Expected<std::vector<model::StrokeGroup>, QString> {
+            const QPointF corner(std::round(centre.x() - image.width() / 2.0),
+                                 std::round(centre.y() - image.height() / 2.0));
+            auto object = model::makePictureObject(model::PictureLayer{name, image, {}}, corner);
+            if (!object)
+                return unexpected(object.error());
+            std::vector<model::StrokeGroup> objects;
+            objects.push_back(std::move(*object));
+            return objects;
+        },
+        tr("Reading the pasted picture..."), tr("Paste"),
+        [](int) { return tr("Pasted a picture as an object."); });
 }
 
 void MainWindow::reportError(const QString &title, const QString &message)

@@ -30,6 +30,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenuBar>
+#include <QMimeData>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -195,6 +196,12 @@ void MainWindow::createEditMenu()
             report(problem);
             return;
         }
+        // A picture another program copied (and no strokes of ours): a picture object.
+        const QMimeData *mime = QApplication::clipboard()->mimeData();
+        if (!StrokeEditing::clipboardHasStrokes() && mime && mime->hasImage()) {
+            pastePicture(qvariant_cast<QImage>(mime->imageData()), m_canvas->cursorPos());
+            return;
+        }
         // At the mouse when it is over the canvas; selected, with the select tool's box shown.
         if (StrokeEditing::paste(*m_state, &problem, m_canvas->cursorPos()))
             m_canvas->setCurrentTool(QStringLiteral("tool.select"));
@@ -245,7 +252,9 @@ void MainWindow::updateEditActions()
     if (QAction *a = action(QStringLiteral("edit.deselect")))
         a->setEnabled(selected);
     if (QAction *a = action(QStringLiteral("edit.paste")))
-        a->setEnabled(StrokeEditing::clipboardHasStrokes() || CelEditing::clipboardHasCels());
+        a->setEnabled(StrokeEditing::clipboardHasStrokes() || CelEditing::clipboardHasCels() ||
+                      (QApplication::clipboard()->mimeData() &&
+                       QApplication::clipboard()->mimeData()->hasImage()));
 }
 
 void MainWindow::createViewMenu()

@@ -12,13 +12,19 @@
 // adds something drawn over every frame.
 #pragma once
 
+#include <finbook/geometry/expected.h>
+#include <finbook/model/types.h>
 #include <finbook/ui/recovery/recovery_dialog.h>
 #include <finbook/ui/window/preferences.h>
 
+#include <QImage>
 #include <QMainWindow>
 #include <QMessageBox>
 
+#include <functional>
 #include <memory>
+#include <optional>
+#include <vector>
 
 class QActionGroup;
 class QDockWidget;
@@ -68,6 +74,9 @@ public:
     // and meshed on a worker while a progress dialog shows. False, with a message, when the
     // file cannot be imported.
     bool importPicture(const QString &path);
+    // Edit → Paste of a picture another program copied (Krita, GIMP, a browser): a picture
+    // object on the current frame, centred at `at` (canvas px) or on the page, one undo step.
+    bool pastePicture(const QImage &image, std::optional<QPointF> at = std::nullopt);
     // Saves to `path` and makes it the document's file; false (reported) on failure.
     bool saveFile(const QString &path);
     // Replaces the document with a new one (1 frame, 1 empty object) without asking.
@@ -135,6 +144,12 @@ protected:
     virtual QString askSavePath();
 
 private:
+    // Picture objects made by `work` on a worker behind a progress dialog saying `reading`,
+    // then put on the current frame as one undo step; false (reported under `title`) when
+    // `work` fails.
+    bool addPictureObjects(
+        const std::function<Expected<std::vector<model::StrokeGroup>, QString>()> &work,
+        const QString &reading, const QString &title, const std::function<QString(int)> &done);
     // recovery/main_window_recovery.cpp
     void createRecovery();
     void applyAutosaveInterval();
