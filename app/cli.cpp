@@ -7,6 +7,7 @@
 #include <finbook/model/export/export_plan.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/io/printable_text.h>
+#include <finbook/model/picture/picture_object.h>
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -83,9 +84,17 @@ QJsonObject summary(const model::LoadedDocument &doc)
 {
     qint64 objects = 0, strokes = 0, points = 0, pins = 0, fills = 0;
     std::unordered_set<const model::StrokeData *> distinct;
+    // Picture objects, and the distinct pictures they show (each saved once) with their bytes.
+    qint64 pictureObjects = 0, pictureBytes = 0;
+    std::unordered_set<const model::PictureData *> pictures;
     for (const model::Frame &f : doc.frames) {
         objects += qint64(f.groups.size());
         for (const model::StrokeGroup &g : f.groups) {
+            if (g.picture && g.picture->data) {
+                ++pictureObjects;
+                if (pictures.insert(g.picture->data.get()).second)
+                    pictureBytes += g.picture->data->png.size();
+            }
             strokes += qint64(g.strokes.size());
             pins += qint64(g.rig.pins.size());
             fills += qint64(g.fills.size());
@@ -106,6 +115,9 @@ QJsonObject summary(const model::LoadedDocument &doc)
     o[QStringLiteral("stroke_data")] = qint64(distinct.size());
     o[QStringLiteral("pins")] = pins;
     o[QStringLiteral("fills")] = fills;
+    o[QStringLiteral("picture_objects")] = pictureObjects;
+    o[QStringLiteral("pictures")] = qint64(pictures.size());
+    o[QStringLiteral("picture_bytes")] = pictureBytes;
     o[QStringLiteral("fps")] = doc.settings.fps;
     o[QStringLiteral("canvas_width")] = doc.settings.canvasSize.width();
     o[QStringLiteral("canvas_height")] = doc.settings.canvasSize.height();

@@ -192,6 +192,16 @@ void TestCli::infoMatchesTheFile()
     QVERIFY(mostCels >= 12);
     QVERIFY(objects >= 7 * mostCels);
     QVERIFY(qint64(distinct.size()) < strokes);
+    QCOMPARE(info[QStringLiteral("picture_objects")].toInteger(-1), 0);
+    // A file with picture objects: counted, with the bytes each distinct picture is saved in.
+    const Run pictures =
+        runFinbook({QStringLiteral("info"),
+                    QStringLiteral(FINBOOK_SOURCE_DIR "/tests/fuzz/seeds/pictures.finbook")});
+    QCOMPARE(pictures.code, 0);
+    const QJsonObject pictureInfo = QJsonDocument::fromJson(pictures.out).object();
+    QCOMPARE(pictureInfo[QStringLiteral("picture_objects")].toInteger(), 2);
+    QCOMPARE(pictureInfo[QStringLiteral("pictures")].toInteger(), 2);
+    QVERIFY(pictureInfo[QStringLiteral("picture_bytes")].toInteger() > 100);
 }
 
 void TestCli::infoInProcessMatchesBinary()

@@ -290,8 +290,7 @@ int saveDocument(const QStringList &files, const QString &out)
     settings.canvasSize = QSize(1920, 1080);
     doc.undoStack()->push(new model::ChangeSettingsCommand(&doc, settings));
     for (std::size_t i = 0; i < imported.size(); ++i) {
-        if (i > 0)
-            doc.undoStack()->push(new model::InsertFrameCommand(&doc, int(i)));
+        doc.undoStack()->push(new model::InsertFrameCommand(&doc, int(i)));
         doc.undoStack()->push(new model::ImportPictureCommand(&doc, doc.frameAt(int(i)).id, -1,
                                                               std::move(imported[i])));
     }
