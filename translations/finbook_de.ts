@@ -571,17 +571,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="181"/>
+        <location filename="../app/cli.cpp" line="193"/>
         <source>No command given; see finbook --help.</source>
         <translation>Kein Befehl angegeben; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="185"/>
+        <location filename="../app/cli.cpp" line="197"/>
         <source>Usage: finbook info FILE</source>
         <translation>Aufruf: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="205"/>
+        <location filename="../app/cli.cpp" line="217"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
@@ -2564,84 +2564,84 @@
         <translation>%1; die Austauschsätze werden weggelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="102"/>
         <location filename="../model/src/picture/picture_section.cpp" line="103"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="229"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="104"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="233"/>
         <source>the pictures</source>
         <translation>die Bilder</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="114"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="115"/>
         <source>picture %1 is cut off</source>
         <translation>Bild %1 ist abgeschnitten</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="120"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="121"/>
         <source>picture %1&apos;s mesh has %2 vertices</source>
         <translation>das Netz von Bild %1 hat %2 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="129"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="130"/>
         <source>picture %1&apos;s mesh has a vertex outside the picture</source>
         <translation>das Netz von Bild %1 hat eine Ecke außerhalb des Bildes</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="136"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="137"/>
         <source>picture %1&apos;s mesh has no triangles</source>
         <translation>das Netz von Bild %1 hat keine Dreiecke</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="144"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="145"/>
         <source>picture %1&apos;s mesh names a vertex it does not have</source>
         <translation>das Netz von Bild %1 nennt eine Ecke, die es nicht hat</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="153"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="154"/>
         <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
         <translation>das Netz von Bild %1 hat ein umgeklapptes Dreieck oder eines ohne Fläche</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="163"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="164"/>
         <source>picture %1 is %2 × %3 pixels: %4</source>
         <translation>Bild %1 ist %2 × %3 Pixel groß: %4</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="172"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
         <source>picture %1 does not decode: %2</source>
         <translation>Bild %1 lässt sich nicht dekodieren: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="177"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="178"/>
         <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
         <translation>Bild %1 ist %2 × %3 Pixel groß, nicht %4 × %5 wie angegeben</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="189"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="190"/>
         <source>%1; the objects showing it are left without it</source>
         <translation>%1; die Objekte, die es zeigen, bleiben ohne Bild</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="201"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="202"/>
         <source>the object&apos;s picture</source>
         <translation>das Bild des Objekts</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="206"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="210"/>
         <source>the picture&apos;s place is out of range</source>
         <translation>die Lage des Bildes liegt außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="214"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="218"/>
         <source>the picture&apos;s pose has a point out of range</source>
         <translation>die Pose des Bildes hat einen Punkt außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="237"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="241"/>
         <source>an object shows picture %1, which the file does not hold</source>
         <translation>ein Objekt zeigt Bild %1, das die Datei nicht enthält</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="263"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="267"/>
         <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
         <translation>die Pose eines Bildes passt nicht zu seinem Netz; es wird in Ruhe gezeigt</translation>
     </message>
@@ -2918,43 +2918,43 @@
         <translation>Sie ist größer als %1 MB.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="40"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="43"/>
         <source>The picture is empty.</source>
         <translation>Das Bild ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="45"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="196"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="48"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="217"/>
         <source>There is not enough memory for the picture.</source>
         <translation>Für das Bild ist nicht genug Speicher da.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="51"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="54"/>
         <source>The picture could not be encoded to be saved: %1</source>
         <translation>Das Bild ließ sich zum Speichern nicht kodieren: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="70"/>
         <source>The picture&apos;s outline cannot be traced: %1</source>
         <translation>Der Umriss des Bildes lässt sich nicht nachzeichnen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="71"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="74"/>
         <source>The picture is fully transparent: nothing of it shows.</source>
         <translation>Das Bild ist ganz durchsichtig: Nichts davon ist zu sehen.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="83"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="86"/>
         <source>The picture&apos;s outline cannot be meshed: %1</source>
         <translation>Der Umriss des Bildes lässt sich nicht vernetzen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="178"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="199"/>
         <source>The object has no picture.</source>
         <translation>Das Objekt hat kein Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="189"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="210"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>Das posierte Bild ist zu groß, um es zu behalten (höchstens %1 Pixel breit und hoch).</translation>
     </message>
@@ -3256,48 +3256,53 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="121"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="124"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="127"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="128"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="149"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="150"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="188"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="189"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (Pose angewendet)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="265"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="335"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
+        <source>Delete Picture</source>
+        <translation>Bild löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="349"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="411"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="425"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="421"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="422"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="435"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="436"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -6560,24 +6565,44 @@
         <translation>Linien mit dem Lasso wählen, dann verschieben, drehen oder skalieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="340"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="387"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>So weit lassen sich die Striche nicht umformen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="347"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
         <source>Move Strokes</source>
         <translation>Striche verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="348"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
+        <source>Move Picture</source>
+        <translation>Bild verschieben</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
         <source>Rotate Strokes</source>
         <translation>Striche drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="349"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
+        <source>Rotate Picture</source>
+        <translation>Bild drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
         <source>Scale Strokes</source>
         <translation>Striche skalieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
+        <source>Scale Picture</source>
+        <translation>Bild skalieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="405"/>
+        <source>The picture cannot be transformed that far.</source>
+        <translation>So weit lässt sich das Bild nicht umformen.</translation>
     </message>
 </context>
 <context>

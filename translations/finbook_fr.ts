@@ -571,17 +571,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="181"/>
+        <location filename="../app/cli.cpp" line="193"/>
         <source>No command given; see finbook --help.</source>
         <translation>Aucune commande indiquée ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="185"/>
+        <location filename="../app/cli.cpp" line="197"/>
         <source>Usage: finbook info FILE</source>
         <translation>Utilisation : finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="205"/>
+        <location filename="../app/cli.cpp" line="217"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
     </message>
@@ -2564,84 +2564,84 @@
         <translation>%1 ; les jeux de dessins sont laissés de côté</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="102"/>
         <location filename="../model/src/picture/picture_section.cpp" line="103"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="229"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="104"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="233"/>
         <source>the pictures</source>
         <translation>les images</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="114"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="115"/>
         <source>picture %1 is cut off</source>
         <translation>l’image %1 est tronquée</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="120"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="121"/>
         <source>picture %1&apos;s mesh has %2 vertices</source>
         <translation>le maillage de l’image %1 a %2 sommets</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="129"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="130"/>
         <source>picture %1&apos;s mesh has a vertex outside the picture</source>
         <translation>le maillage de l’image %1 a un sommet hors de l’image</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="136"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="137"/>
         <source>picture %1&apos;s mesh has no triangles</source>
         <translation>le maillage de l’image %1 n’a pas de triangle</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="144"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="145"/>
         <source>picture %1&apos;s mesh names a vertex it does not have</source>
         <translation>le maillage de l’image %1 désigne un sommet qu’il n’a pas</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="153"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="154"/>
         <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
         <translation>le maillage de l’image %1 a un triangle retourné ou sans aire</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="163"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="164"/>
         <source>picture %1 is %2 × %3 pixels: %4</source>
         <translation>l’image %1 fait %2 × %3 pixels : %4</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="172"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
         <source>picture %1 does not decode: %2</source>
         <translation>l’image %1 ne se décode pas : %2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="177"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="178"/>
         <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
         <translation>l’image %1 fait %2 × %3 pixels, et non les %4 × %5 annoncés</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="189"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="190"/>
         <source>%1; the objects showing it are left without it</source>
         <translation>%1 ; les objets qui la montrent restent sans elle</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="201"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="202"/>
         <source>the object&apos;s picture</source>
         <translation>l’image de l’objet</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="206"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="210"/>
         <source>the picture&apos;s place is out of range</source>
         <translation>la position de l’image est hors limites</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="214"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="218"/>
         <source>the picture&apos;s pose has a point out of range</source>
         <translation>la pose de l’image a un point hors limites</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="237"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="241"/>
         <source>an object shows picture %1, which the file does not hold</source>
         <translation>un objet montre l’image %1, que le fichier ne contient pas</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="263"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="267"/>
         <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
         <translation>la pose d’une image ne correspond pas à son maillage ; elle est montrée au repos</translation>
     </message>
@@ -2918,43 +2918,43 @@
         <translation>Il dépasse %1 Mo.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="40"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="43"/>
         <source>The picture is empty.</source>
         <translation>L’image est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="45"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="196"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="48"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="217"/>
         <source>There is not enough memory for the picture.</source>
         <translation>Il n’y a pas assez de mémoire pour l’image.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="51"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="54"/>
         <source>The picture could not be encoded to be saved: %1</source>
         <translation>L’image n’a pas pu être encodée pour être enregistrée : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="70"/>
         <source>The picture&apos;s outline cannot be traced: %1</source>
         <translation>Le contour de l’image ne peut pas être tracé : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="71"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="74"/>
         <source>The picture is fully transparent: nothing of it shows.</source>
         <translation>L’image est entièrement transparente : rien n’en paraît.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="83"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="86"/>
         <source>The picture&apos;s outline cannot be meshed: %1</source>
         <translation>Le contour de l’image ne peut pas être maillé : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="178"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="199"/>
         <source>The object has no picture.</source>
         <translation>L’objet n’a pas d’image.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="189"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="210"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>L’image posée est trop grande pour être gardée (au plus %1 pixels de large et de haut).</translation>
     </message>
@@ -3256,48 +3256,53 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="121"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="124"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="127"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="128"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="149"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="150"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="188"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="189"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (pose appliquée)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="265"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
         <source>Delete Strokes</source>
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="335"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
+        <source>Delete Picture</source>
+        <translation>Supprimer l’image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="349"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="411"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="425"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="421"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="422"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="435"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="436"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -6560,24 +6565,44 @@
         <translation>entourer des traits au lasso, puis les déplacer, les tourner ou les mettre à l&apos;échelle</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="340"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="387"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>Les traits ne peuvent pas être transformés à ce point.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="347"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
         <source>Move Strokes</source>
         <translation>Déplacer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="348"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
+        <source>Move Picture</source>
+        <translation>Déplacer l’image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
         <source>Rotate Strokes</source>
         <translation>Faire pivoter les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="349"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
+        <source>Rotate Picture</source>
+        <translation>Faire pivoter l’image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
         <source>Scale Strokes</source>
         <translation>Redimensionner les traits</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
+        <source>Scale Picture</source>
+        <translation>Redimensionner l’image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="405"/>
+        <source>The picture cannot be transformed that far.</source>
+        <translation>L’image ne peut pas être transformée à ce point.</translation>
     </message>
 </context>
 <context>

@@ -571,17 +571,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="181"/>
+        <location filename="../app/cli.cpp" line="193"/>
         <source>No command given; see finbook --help.</source>
         <translation>コマンドが指定されていません。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="185"/>
+        <location filename="../app/cli.cpp" line="197"/>
         <source>Usage: finbook info FILE</source>
         <translation>使い方: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="205"/>
+        <location filename="../app/cli.cpp" line="217"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
     </message>
@@ -2555,84 +2555,84 @@
         <translation>%1。差し替えセットは読み込みません</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="102"/>
         <location filename="../model/src/picture/picture_section.cpp" line="103"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="229"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="104"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="233"/>
         <source>the pictures</source>
         <translation>画像</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="114"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="115"/>
         <source>picture %1 is cut off</source>
         <translation>画像 %1 が途中で切れています</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="120"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="121"/>
         <source>picture %1&apos;s mesh has %2 vertices</source>
         <translation>画像 %1 のメッシュの頂点数が %2 です</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="129"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="130"/>
         <source>picture %1&apos;s mesh has a vertex outside the picture</source>
         <translation>画像 %1 のメッシュに画像の外の頂点があります</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="136"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="137"/>
         <source>picture %1&apos;s mesh has no triangles</source>
         <translation>画像 %1 のメッシュに三角形がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="144"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="145"/>
         <source>picture %1&apos;s mesh names a vertex it does not have</source>
         <translation>画像 %1 のメッシュが存在しない頂点を参照しています</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="153"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="154"/>
         <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
         <translation>画像 %1 のメッシュに裏返った三角形か面積のない三角形があります</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="163"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="164"/>
         <source>picture %1 is %2 × %3 pixels: %4</source>
         <translation>画像 %1 は %2 × %3 ピクセルです：%4</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="172"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
         <source>picture %1 does not decode: %2</source>
         <translation>画像 %1 をデコードできません：%2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="177"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="178"/>
         <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
         <translation>画像 %1 は %2 × %3 ピクセルで、記載の %4 × %5 ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="189"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="190"/>
         <source>%1; the objects showing it are left without it</source>
         <translation>%1。この画像を表示するオブジェクトは画像なしで開きます</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="201"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="202"/>
         <source>the object&apos;s picture</source>
         <translation>オブジェクトの画像</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="206"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="210"/>
         <source>the picture&apos;s place is out of range</source>
         <translation>画像の位置が範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="214"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="218"/>
         <source>the picture&apos;s pose has a point out of range</source>
         <translation>画像のポーズに範囲外の点があります</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="237"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="241"/>
         <source>an object shows picture %1, which the file does not hold</source>
         <translation>オブジェクトがファイルにない画像 %1 を表示しています</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="263"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="267"/>
         <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
         <translation>画像のポーズがメッシュと合いません。レストの状態で表示します</translation>
     </message>
@@ -2908,43 +2908,43 @@
         <translation>%1 MB を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="40"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="43"/>
         <source>The picture is empty.</source>
         <translation>画像が空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="45"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="196"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="48"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="217"/>
         <source>There is not enough memory for the picture.</source>
         <translation>画像のためのメモリが足りません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="51"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="54"/>
         <source>The picture could not be encoded to be saved: %1</source>
         <translation>保存用に画像をエンコードできませんでした：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="67"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="70"/>
         <source>The picture&apos;s outline cannot be traced: %1</source>
         <translation>画像の輪郭を抽出できません：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="71"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="74"/>
         <source>The picture is fully transparent: nothing of it shows.</source>
         <translation>画像が完全に透明で、何も見えません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="83"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="86"/>
         <source>The picture&apos;s outline cannot be meshed: %1</source>
         <translation>画像の輪郭をメッシュにできません：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="178"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="199"/>
         <source>The object has no picture.</source>
         <translation>オブジェクトに画像がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="189"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="210"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>ポーズをつけた画像が大きすぎて保持できません（幅と高さは最大 %1 ピクセル）。</translation>
     </message>
@@ -3245,48 +3245,53 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="121"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="124"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="127"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="128"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="149"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="150"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="188"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="189"/>
         <source>%1 (pose applied)</source>
         <translation>%1（ポーズ適用済み）</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="265"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
         <source>Delete Strokes</source>
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="335"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
+        <source>Delete Picture</source>
+        <translation>画像を削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="349"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="411"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="425"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="421"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="422"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="435"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="436"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -6537,24 +6542,44 @@
         <translation>投げ縄で線を選び、動かす・回す・拡大縮小する</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="340"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="387"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>ストロークをそこまで変形することはできません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="347"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
         <source>Move Strokes</source>
         <translation>ストロークを移動</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="348"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
+        <source>Move Picture</source>
+        <translation>画像を移動</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
         <source>Rotate Strokes</source>
         <translation>ストロークを回転</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="349"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
+        <source>Rotate Picture</source>
+        <translation>画像を回転</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
         <source>Scale Strokes</source>
         <translation>ストロークを拡大・縮小</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
+        <source>Scale Picture</source>
+        <translation>画像を拡大縮小</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_select.cpp" line="405"/>
+        <source>The picture cannot be transformed that far.</source>
+        <translation>画像をそこまで変形することはできません。</translation>
     </message>
 </context>
 <context>

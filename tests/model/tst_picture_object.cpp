@@ -298,7 +298,7 @@ void TestPictureObject::importIsOneUndoStep()
     QVERIFY2(objects.hasValue(), qPrintable(objects ? QString() : objects.error()));
     QCOMPARE(objects->size(), std::size_t(1));
     // Centred on the page, on whole pixels.
-    QCOMPARE(objects->front().picture->origin, QPointF(320 - kW / 2, 240 - kH / 2));
+    QCOMPARE(objects->front().picture->restRect().topLeft(), QPointF(320 - kW / 2, 240 - kH / 2));
     QCOMPARE(objects->front().name, QStringLiteral("blob"));
     Document doc;
     doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
@@ -340,7 +340,8 @@ void TestPictureObject::saveOpenKeepsOnePictureForAllFrames()
     QCOMPARE(reopened.frameCount(), s.doc.frameCount());
     const StrokeGroup &first = reopened.frameAt(0).groups.back();
     QVERIFY(first.picture && pictureIsValid(*first.picture));
-    QCOMPARE(first.picture->origin, kAt);
+    QCOMPARE(first.picture->place, s.doc.group(s.object)->picture->place);
+    QCOMPARE(first.picture->restRect().topLeft(), kAt);
     QCOMPARE(first.picture->data->image, s.doc.group(s.object)->picture->data->image);
     QCOMPARE(first.picture->mesh->uv, s.doc.group(s.object)->picture->mesh->uv);
     QCOMPARE(first.picture->mesh->F, s.doc.group(s.object)->picture->mesh->F);

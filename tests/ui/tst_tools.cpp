@@ -4,6 +4,8 @@
 #include "tst_tools_support.h"
 
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/picture/picture_commands.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/ui/tools/stroke_editing.h>
 #include <finbook/ui/tools/tool_eraser.h>
 #include <finbook/ui/tools/tool_eyedropper.h>
@@ -40,6 +42,7 @@ private slots:
     void eraserLeavesHiddenAndLockedAlone();
     void eraserDragWithoutHitsLeavesNoUndoStep();
     void lassoSelectsMostlyInsideStrokes();
+    void picturesAreSelectedMovedAndDeleted();
     void clickSelectsStrokeUnderCursor();
     void dragMovesSelectionAndUndoRestoresExactly();
     void cornerHandleScalesSelection_data();
@@ -430,6 +433,53 @@ void TestTools::rotateHandleRotatesSelection()
     QVERIFY(std::abs(pts.front().x - 200) < 0.01);
     QVERIFY(std::abs(pts.back().x - 200) < 0.01);
     QVERIFY(std::abs(std::abs(pts.back().y - pts.front().y) - 100) < 0.01);
+}
+
+// Picture objects with the select tool (issue 51): a click on the picture picks it, a drag
+// moves it exactly (one undo step, undone to the very same picture), a lasso around it picks it
+// with the strokes, Delete takes the object away, Escape drops the pick.
+void TestTools::picturesAreSelectedMovedAndDeleted()
+{
+    QImage painted(80, 60, QImage::Format_ARGB32_Premultiplied);
+    painted.fill(QColor(30, 120, 200));
+    auto made = model::makePictureObject(model::PictureLayer{QStringLiteral("sky"), painted, {}},
+                                         QPointF(100, 100));
+    QVERIFY(made.hasValue());
+    std::vector<model::StrokeGroup> objects{*made};
+    auto *import = new model::ImportPictureCommand(m_doc.get(), m_doc->frameAt(0).id, -1, objects);
+    m_doc->undoStack()->push(import);
+    const model::Id picture = import->objectIds().front();
+    const model::Id near = addStroke(*m_doc, group(0), line({300, 300}, {360, 300}));
+    m_canvas->setCurrentTool(QStringLiteral("tool.select"));
+    drag(m_canvas.get(), {m_canvas->mapFromCanvas({140, 130})});
+    QCOMPARE(m_state->selectedPictures(), std::vector<model::Id>{picture});
+    QVERIFY(m_state->selectedStrokes().empty());
+    const auto before = m_doc->group(picture)->picture;
+    const int steps = m_doc->undoStack()->count();
+    dragCanvas(m_canvas.get(), {140, 130}, {170, 150}, 5);
+    QCOMPARE(m_doc->undoStack()->count(), steps + 1);
+    QCOMPARE(m_doc->group(picture)->picture->restRect(), QRectF(130, 120, 80, 60));
+    QVERIFY(m_doc->group(picture)->picture->data == before->data); // moved, not resampled
+    QCOMPARE(m_state->selectedPictures(), std::vector<model::Id>{picture});
+    m_doc->undoStack()->undo();
+    QVERIFY(m_doc->group(picture)->picture == before);
+    // A lasso around both the picture and the line picks both.
+    std::vector<QPointF> lasso;
+    for (const QPointF p :
+         {QPointF(80, 80), QPointF(400, 80), QPointF(400, 340), QPointF(80, 340), QPointF(80, 80)})
+        lasso.push_back(m_canvas->mapFromCanvas(p));
+    drag(m_canvas.get(), lasso);
+    QCOMPARE(m_state->selectedPictures(), std::vector<model::Id>{picture});
+    QCOMPARE(m_state->selectedStrokes(), std::vector<model::Id>{near});
+    // Escape drops the pick; Delete with the picture picked removes its object, undoably.
+    QTest::keyClick(m_canvas.get(), Qt::Key_Escape);
+    QVERIFY(!m_state->hasSelection());
+    drag(m_canvas.get(), {m_canvas->mapFromCanvas({140, 130})});
+    QVERIFY(ui::StrokeEditing::deleteSelection(*m_state));
+    QVERIFY(!m_doc->group(picture));
+    QCOMPARE(strokeCount(0), 1);
+    m_doc->undoStack()->undo();
+    QVERIFY(m_doc->group(picture) && m_doc->group(picture)->picture == before);
 }
 
 void TestTools::deleteSelection()

@@ -45,4 +45,35 @@ void ImportPictureCommand::undo()
         m_doc->takeGroup(*it);
 }
 
+SetPictureCommand::SetPictureCommand(Document *doc, Id groupId,
+                                     std::shared_ptr<const ObjectPicture> picture,
+                                     const QString &text, QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
+    , m_new(std::move(picture))
+{
+    setText(text);
+    const StrokeGroup *g = doc->group(groupId);
+    if (!g) {
+        setObsolete(true);
+        return;
+    }
+    m_old = g->picture;
+    m_oldDeformed = g->deformed;
+}
+
+void SetPictureCommand::redo()
+{
+    if (!isObsolete())
+        m_doc->setPicture(m_groupId, m_new);
+}
+
+void SetPictureCommand::undo()
+{
+    if (isObsolete())
+        return;
+    m_doc->setPicture(m_groupId, m_old);
+    m_doc->setDeformed(m_groupId, m_oldDeformed);
+}
+
 } // namespace finbook::model

@@ -21,9 +21,12 @@ Eigen::MatrixX2d ObjectPicture::restVertices() const
 {
     if (!mesh)
         return {};
-    Eigen::MatrixX2d V = mesh->uv;
-    V.col(0).array() += origin.x();
-    V.col(1).array() += origin.y();
+    const Eigen::MatrixX2d &uv = mesh->uv;
+    Eigen::MatrixX2d V(uv.rows(), 2);
+    for (Eigen::Index i = 0; i < uv.rows(); ++i) {
+        const QPointF p = place.map(QPointF(uv(i, 0), uv(i, 1)));
+        V.row(i) << p.x(), p.y();
+    }
     return V;
 }
 
@@ -31,7 +34,7 @@ QRectF ObjectPicture::restRect() const
 {
     if (!data)
         return {};
-    return {origin, QSizeF(data->image.size())};
+    return place.mapRect(QRectF(QPointF(0, 0), QSizeF(data->image.size())));
 }
 
 Expected<PictureDataPtr, QString> makePictureData(const QImage &image)
@@ -100,7 +103,7 @@ Expected<StrokeGroup, QString> makePictureObject(const PictureLayer &layer, QPoi
     auto picture = std::make_shared<ObjectPicture>();
     picture->data = std::move(*data);
     picture->mesh = std::move(*mesh);
-    picture->origin = at;
+    picture->place = QTransform::fromTranslate(at.x(), at.y());
     StrokeGroup group;
     group.name = layer.name;
     group.picture = std::move(picture);
@@ -129,14 +132,32 @@ Expected<std::vector<StrokeGroup>, QString> pictureObjectsFromFile(const QString
     return objects;
 }
 
+bool validPicturePlace(const QTransform &place)
+{
+    constexpr double kFar = 1e7;
+    const double values[] = {place.m11(), place.m12(), place.m21(),
+                             place.m22(), place.dx(),  place.dy()};
+    for (double v : values)
+        if (!std::isfinite(v) || std::abs(v) > kFar)
+            return false;
+    return place.isAffine() && std::abs(place.determinant()) >= 1e-6;
+}
+
+std::shared_ptr<const ObjectPicture> movedPicture(const ObjectPicture &picture,
+                                                  const QTransform &by)
+{
+    auto moved = std::make_shared<ObjectPicture>(picture);
+    moved->place = picture.place * by;
+    return moved;
+}
+
 bool pictureIsValid(const ObjectPicture &picture)
 {
     if (!picture.data || picture.data->image.isNull() || !picture.mesh)
         return false;
     const PictureMesh &m = *picture.mesh;
     return m.F.rows() > 0 && m.uv.rows() >= 3 && m.uv.allFinite() && m.F.minCoeff() >= 0 &&
-           m.F.maxCoeff() < m.uv.rows() && std::isfinite(picture.origin.x()) &&
-           std::isfinite(picture.origin.y());
+           m.F.maxCoeff() < m.uv.rows() && validPicturePlace(picture.place);
 }
 
 geometry::Region pictureRegion(const ObjectPicture &picture)
@@ -205,7 +226,7 @@ Expected<std::shared_ptr<const ObjectPicture>, QString> bakedPicture(const Strok
     auto picture = std::make_shared<ObjectPicture>();
     picture->data = std::move(*data);
     picture->mesh = std::move(*mesh);
-    picture->origin = QPointF(topLeft);
+    picture->place = QTransform::fromTranslate(topLeft.x(), topLeft.y());
     return std::shared_ptr<const ObjectPicture>(std::move(picture));
 }
 

@@ -69,8 +69,9 @@ void writePictureChunk(ByteWriter &w, const StrokeGroup &group, const PictureTab
 {
     const ObjectPicture &p = *group.picture;
     w.u32(table.indexOf(p));
-    w.f64(p.origin.x());
-    w.f64(p.origin.y());
+    for (const double v :
+         {p.place.m11(), p.place.m12(), p.place.m21(), p.place.m22(), p.place.dx(), p.place.dy()})
+        w.f64(v);
     const std::size_t n = std::size_t(p.mesh->uv.rows());
     const bool withPose = posed && group.deformed && group.deformed->pictureVertices.size() == n;
     w.u32(withPose ? quint32(n) : 0);
@@ -201,8 +202,11 @@ void Reader::readPictureChunk(Cursor &c, StrokeGroup &g)
     const char *what = QT_TRANSLATE_NOOP("FinbookFile", "the object's picture");
     PendingPicture pending;
     pending.index = c.u32(what);
-    const double x = c.f64(what), y = c.f64(what);
-    if (!sane(x) || !sane(y))
+    double m[6];
+    for (double &v : m)
+        v = c.f64(what);
+    const QTransform place(m[0], m[1], m[2], m[3], m[4], m[5]);
+    if (!validPicturePlace(place))
         c.fail(FileErrorCode::BadValue, FinbookFile::tr("the picture's place is out of range"));
     const quint32 posed = c.count(kPictureVertexBytes, what);
     charge(c, qint64(posed) * qint64(sizeof(QPointF)));
@@ -215,7 +219,7 @@ void Reader::readPictureChunk(Cursor &c, StrokeGroup &g)
         pending.posed.emplace_back(px, py);
     }
     auto picture = std::make_shared<ObjectPicture>();
-    picture->origin = QPointF(x, y);
+    picture->place = place;
     pending.picture = picture;
     g.picture = std::move(picture);
     m_pendingPictures.push_back(std::move(pending));

@@ -7,10 +7,12 @@
 //              its texture mesh, in the order objects first show them. At most once, after FRAM;
 //              written only when some object is a picture, so a Finbook that does not know it
 //              refuses the file as made by a newer Finbook (it would lose the pictures).
-//   "PICO"  := u32 picture f64 originX f64 originY u32 posed (f64 x f64 y)[posed]
-//              (object chunk): the object shows picture `picture` of PICT, its top-left corner
-//              at origin; `posed` is 0, or the texture mesh's vertex count when the object's
-//              saved pose (DEFM) carries the picture too.
+//   "PICO"  := u32 picture f64 m11 f64 m12 f64 m21 f64 m22 f64 dx f64 dy
+//              u32 posed (f64 x f64 y)[posed]
+//              (object chunk): the object shows picture `picture` of PICT placed by the affine
+//              map (x, y) → (m11 x + m21 y + dx, m12 x + m22 y + dy) from picture pixels to the
+//              rest drawing (QTransform's order); `posed` is 0, or the texture mesh's vertex
+//              count when the object's saved pose (DEFM) carries the picture too.
 #pragma once
 
 #include "../finbook_file_byte_writer.h"
@@ -26,7 +28,7 @@ namespace finbook::model::file_format {
 constexpr std::size_t kPictureFixedBytes = 4 + 4 + 8 + 4 + 4;
 constexpr std::size_t kPictureVertexBytes = 8 + 8;
 constexpr std::size_t kPictureTriangleBytes = 4 * 3;
-constexpr std::size_t kPictureChunkFixedBytes = 4 + 8 + 8 + 4;
+constexpr std::size_t kPictureChunkFixedBytes = 4 + 6 * 8 + 4;
 constexpr quint32 kMaxPictureMeshVertices = 1'000'000;
 
 // The pictures of a document in the order objects first show them: one entry per picture and

@@ -26,8 +26,13 @@ model::Frame withoutStrokes(const model::Frame &frame, const std::vector<model::
 {
     model::Frame copy = frame;
     for (model::StrokeGroup &g : copy.groups) {
+        // A picture object's id among them: its picture is being dragged.
+        if (g.picture && std::find(hidden.begin(), hidden.end(), g.id) != hidden.end())
+            g.picture = nullptr;
         const bool deformed = g.isDeformed() && g.deformed->strokes.size() == g.strokes.size();
         model::DeformedStrokes pose;
+        if (deformed)
+            pose.pictureVertices = g.deformed->pictureVertices;
         std::vector<model::Stroke> kept;
         for (std::size_t i = 0; i < g.strokes.size(); ++i) {
             if (std::find(hidden.begin(), hidden.end(), g.strokes[i].id) != hidden.end())

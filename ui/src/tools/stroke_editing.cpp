@@ -2,6 +2,7 @@
 
 #include <finbook/model/commands.h>
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
@@ -254,7 +255,8 @@ void StrokeEditing::endRestEdit(EditorState &state, const std::vector<model::Id>
 bool StrokeEditing::deleteSelection(EditorState &state)
 {
     const std::vector<model::Id> ids = state.selectedStrokes();
-    if (ids.empty())
+    const std::vector<model::Id> pictures = state.selectedPictures();
+    if (ids.empty() && pictures.empty())
         return false;
     model::Document *doc = state.document();
     std::vector<model::Id> groups;
@@ -262,8 +264,17 @@ bool StrokeEditing::deleteSelection(EditorState &state)
         if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
             groups.push_back(doc->frameAt(at).groups[std::size_t(at.group)].id);
     const std::vector<model::Id> following = skeletonsFollowing(state, groups);
-    for (model::Id id : beginRestEditOf(doc, tr("Delete Strokes"), ids))
+    const QString text = ids.empty() ? tr("Delete Picture") : tr("Delete Strokes");
+    for (model::Id id : beginRestEditOf(doc, text, ids))
         doc->undoStack()->push(new model::RemoveStrokeCommand(doc, id));
+    // A picture object goes with its picture, unless lines drawn on it stay.
+    for (model::Id id : pictures)
+        if (const model::StrokeGroup *g = doc->group(id); g && g->picture && isEditable(*g)) {
+            if (g->strokes.empty())
+                doc->undoStack()->push(new model::RemoveObjectCommand(doc, id));
+            else
+                doc->undoStack()->push(new model::SetPictureCommand(doc, id, nullptr, text));
+        }
     endRestEdit(state, following);
     state.setSelectedStrokes({});
     return true;
@@ -271,13 +282,16 @@ bool StrokeEditing::deleteSelection(EditorState &state)
 
 void StrokeEditing::selectAll(EditorState &state)
 {
-    std::vector<model::Id> ids;
+    std::vector<model::Id> ids, pictures;
     if (const model::Frame *f = state.currentFrame())
         for (const model::StrokeGroup &g : f->groups)
-            if (isEditable(g))
+            if (isEditable(g)) {
                 for (const model::Stroke &s : g.strokes)
                     ids.push_back(s.id);
-    state.setSelectedStrokes(std::move(ids));
+                if (g.picture)
+                    pictures.push_back(g.id);
+            }
+    state.setSelection(std::move(ids), std::move(pictures));
 }
 
 std::vector<model::StrokeDataPtr> StrokeEditing::selectedData(const EditorState &state)

@@ -1,6 +1,8 @@
 #include "stroke_hit.h"
 
 #include <finbook/model/commands.h>
+#include <finbook/model/picture/picture_commands.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/render.h>
 #include <finbook/model/scene/shot.h>
 #include <finbook/ui/canvas/canvas_widget.h>
@@ -35,6 +37,25 @@ void forStrokes(const EditorState &state, const std::vector<model::Id> &ids,
             for (std::size_t i = 0; i < g.strokes.size(); ++i)
                 if (contains(ids, g.strokes[i].id))
                     fn(g, i);
+}
+
+// Calls fn(group) for every picture object of the current frame listed in `ids`.
+void forPictures(const EditorState &state, const std::vector<model::Id> &ids,
+                 const std::function<void(const model::StrokeGroup &)> &fn)
+{
+    if (const model::Frame *f = state.currentFrame())
+        for (const model::StrokeGroup &g : f->groups)
+            if (g.picture && contains(ids, g.id))
+                fn(g);
+}
+
+// The topmost editable picture object of `frame` whose picture shows at `pos`.
+model::Id pictureAt(const model::Frame &frame, QPointF pos)
+{
+    for (auto it = frame.groups.rbegin(); it != frame.groups.rend(); ++it)
+        if (it->picture && isEditable(*it) && model::pictureShowsAt(*it, pos))
+            return it->id;
+    return model::kNoId;
 }
 
 // A stroke of another visible, unlocked layer shown at `pos` (the front layer first), as
@@ -93,6 +114,8 @@ QRectF SelectTool::selectionBounds() const
                [&](const model::StrokeGroup &g, std::size_t i) {
                    bounds |= strokeBounds(model::displayedPoints(g, i), g.strokes[i].data->width);
                });
+    forPictures(*state(), state()->selectedPictures(),
+                [&](const model::StrokeGroup &g) { bounds |= model::shownPictureBounds(g); });
     return bounds;
 }
 
@@ -155,19 +178,24 @@ void SelectTool::press(const ToolEvent &event)
 {
     m_start = event.pos;
     m_transform.reset();
-    const Handle h = state()->selectedStrokes().empty() ? Handle::None : handleAt(event.widgetPos);
+    const Handle h = !state()->hasSelection() ? Handle::None : handleAt(event.widgetPos);
     if (h == Handle::None) {
         m_mode = Mode::Lasso;
         m_lasso = QPolygonF{event.pos};
         return;
     }
     m_dragged.clear();
+    m_draggedPictures.clear();
     forStrokes(*state(), state()->selectedStrokes(),
                [&](const model::StrokeGroup &g, std::size_t i) {
                    if (isEditable(g))
                        m_dragged.push_back(g.strokes[i].id);
                });
-    if (m_dragged.empty())
+    forPictures(*state(), state()->selectedPictures(), [&](const model::StrokeGroup &g) {
+        if (isEditable(g))
+            m_draggedPictures.push_back(g.id);
+    });
+    if (m_dragged.empty() && m_draggedPictures.empty())
         return;
     m_startBounds = selectionBounds();
     const QRectF b = m_startBounds;
@@ -187,7 +215,11 @@ void SelectTool::press(const ToolEvent &event)
         m_anchor = b.center() * 2 - m_grabbed;
         break;
     }
-    canvas()->setSuppressedStrokes(m_dragged);
+    // The canvas leaves out what is dragged (a picture object's id: its picture); the overlay
+    // draws it where the drag takes it.
+    std::vector<model::Id> suppressed = m_dragged;
+    suppressed.insert(suppressed.end(), m_draggedPictures.begin(), m_draggedPictures.end());
+    canvas()->setSuppressedStrokes(std::move(suppressed));
 }
 
 void SelectTool::move(const ToolEvent &event)
@@ -221,7 +253,7 @@ void SelectTool::release(const ToolEvent &event)
 
 void SelectTool::hover(const ToolEvent &event)
 {
-    const Handle h = state()->selectedStrokes().empty() ? Handle::None : handleAt(event.widgetPos);
+    const Handle h = !state()->hasSelection() ? Handle::None : handleAt(event.widgetPos);
     canvas()->setCursor(cursorFor(h));
 }
 
@@ -267,6 +299,7 @@ void SelectTool::finishLasso(const ToolEvent &event)
 {
     const bool add = event.modifiers & Qt::ShiftModifier;
     std::vector<model::Id> picked = add ? state()->selectedStrokes() : std::vector<model::Id>{};
+    std::vector<model::Id> pictures = add ? state()->selectedPictures() : std::vector<model::Id>{};
     const model::Frame *frame = state()->currentFrame();
     if (!frame) {
         state()->setSelectedStrokes({});
@@ -288,7 +321,12 @@ void SelectTool::finishLasso(const ToolEvent &event)
         }
         if (hit != model::kNoId && !contains(picked, hit))
             picked.push_back(hit);
-        state()->setSelectedStrokes(std::move(picked));
+        // No line there: a click on a picture picks the picture.
+        if (hit == model::kNoId)
+            if (const model::Id picture = pictureAt(*frame, event.pos);
+                picture != model::kNoId && !contains(pictures, picture))
+                pictures.push_back(picture);
+        state()->setSelection(std::move(picked), std::move(pictures));
         return;
     }
     for (const model::StrokeGroup &g : frame->groups) {
@@ -298,13 +336,22 @@ void SelectTool::finishLasso(const ToolEvent &event)
             if (!contains(picked, g.strokes[i].id) &&
                 fractionInside(model::displayedPoints(g, i), m_lasso) >= kLassoShare)
                 picked.push_back(g.strokes[i].id);
+        // A picture whose mesh lies mostly inside the lasso, as a stroke's points.
+        if (g.picture && !contains(pictures, g.id)) {
+            const Eigen::MatrixX2d V = model::shownPictureVertices(g);
+            std::vector<model::StrokePoint> points(std::size_t(V.rows()));
+            for (Eigen::Index k = 0; k < V.rows(); ++k)
+                points[std::size_t(k)] = {float(V(k, 0)), float(V(k, 1)), 1.0f};
+            if (!points.empty() && fractionInside(points, m_lasso) >= kLassoShare)
+                pictures.push_back(g.id);
+        }
     }
-    state()->setSelectedStrokes(std::move(picked));
+    state()->setSelection(std::move(picked), std::move(pictures));
 }
 
 void SelectTool::commitTransform()
 {
-    if (m_transform.isIdentity() || m_dragged.empty())
+    if (m_transform.isIdentity() || (m_dragged.empty() && m_draggedPictures.empty()))
         return;
     model::Document *doc = state()->document();
     const qreal widthScale = std::sqrt(std::abs(m_transform.determinant()));
@@ -344,12 +391,31 @@ void SelectTool::commitTransform()
         groups.push_back(g.id);
         data.push_back(std::move(moved));
     }
-    const QString text = m_mode == Mode::Move     ? tr("Move Strokes")
-                         : m_mode == Mode::Rotate ? tr("Rotate Strokes")
-                                                  : tr("Scale Strokes");
+    const bool onlyPictures = ids.empty();
+    const QString text =
+        m_mode == Mode::Move     ? (onlyPictures ? tr("Move Picture") : tr("Move Strokes"))
+        : m_mode == Mode::Rotate ? (onlyPictures ? tr("Rotate Picture") : tr("Rotate Strokes"))
+                                 : (onlyPictures ? tr("Scale Picture") : tr("Scale Strokes"));
     // A cut-out pose bakes a line into its parts (new ids beside the first's): once the pose
     // is the drawing, the parts are moved, each from its own points (those shown).
+    // The pictures' new places, checked before anything is changed.
+    for (model::Id id : m_draggedPictures) {
+        const model::StrokeGroup *g = doc->group(id);
+        if (g && g->picture && !model::validPicturePlace(g->picture->place * m_transform)) {
+            canvas()->postMessage(tr("The picture cannot be transformed that far."));
+            return;
+        }
+    }
     const std::vector<model::Id> parts = StrokeEditing::beginRestEditOf(doc, text, ids);
+    // A posed picture object's pose becomes its picture first (Apply Pose: resampled once);
+    // then its picture moves as the drag showed it.
+    StrokeEditing::applyPoses(doc, m_draggedPictures);
+    for (model::Id id : m_draggedPictures)
+        if (const model::StrokeGroup *g = doc->group(id); g && g->picture) {
+            doc->undoStack()->push(new model::SetPictureCommand(
+                doc, id, model::movedPicture(*g->picture, m_transform), text));
+            groups.push_back(id);
+        }
     if (parts != ids) {
         data.clear();
         for (model::Id id : parts) {
@@ -362,10 +428,11 @@ void SelectTool::commitTransform()
             data.push_back(moved ? std::move(moved) : std::make_shared<model::StrokeData>(part));
         }
     }
-    doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, parts, data, text));
+    if (!parts.empty())
+        doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, parts, data, text));
     StrokeEditing::endRestEdit(*state(), groups); // a shown skeleton follows the moved lines
     if (parts != ids)
-        state()->setSelectedStrokes(parts);
+        state()->setSelection(parts, state()->selectedPictures());
 }
 
 void SelectTool::cancelDrag()
@@ -373,6 +440,7 @@ void SelectTool::cancelDrag()
     m_mode = Mode::Idle;
     m_lasso.clear();
     m_dragged.clear();
+    m_draggedPictures.clear();
     m_transform.reset();
     if (canvas()) {
         canvas()->setSuppressedStrokes({});
@@ -391,7 +459,7 @@ bool SelectTool::keyPress(QKeyEvent *event)
         return false;
     if (m_mode != Mode::Idle)
         cancelDrag();
-    else if (!state()->selectedStrokes().empty())
+    else if (state()->hasSelection())
         state()->setSelectedStrokes({});
     else
         return false;
@@ -405,6 +473,8 @@ void SelectTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidge
     if (transforming) {
         painter.save();
         painter.setTransform(m_transform * canvasToWidget, true);
+        forPictures(*state(), m_draggedPictures,
+                    [&](const model::StrokeGroup &g) { model::paintPicture(painter, g); });
         forStrokes(*state(), m_dragged, [&](const model::StrokeGroup &g, std::size_t i) {
             const model::StrokeData &d = *g.strokes[i].data;
             model::paintStroke(painter, model::displayedPoints(g, i), d.color, d.width);

@@ -41,17 +41,23 @@ EditorState::EditorState(model::Document *document, QObject *parent)
     });
     // A selection never outlives its strokes (erased, undone, moved to another frame).
     connect(m_doc, &model::Document::frameChanged, this, [this] {
-        std::vector<model::Id> kept;
+        std::vector<model::Id> kept, keptPictures;
         for (model::Id id : m_selection) {
             const model::StrokeLocation at = m_doc->locateStroke(id);
             if (at.isValid() && at.layer == m_doc->currentLayerIndex() && at.frame == m_frameIndex)
                 kept.push_back(id);
         }
-        if (kept != m_selection)
-            setSelectedStrokes(std::move(kept));
+        for (model::Id id : m_pictureSelection) {
+            const model::GroupLocation at = m_doc->locateGroup(id);
+            if (at.isValid() && at.layer == m_doc->currentLayerIndex() &&
+                at.frame == m_frameIndex && m_doc->group(id)->picture)
+                keptPictures.push_back(id);
+        }
+        if (kept != m_selection || keptPictures != m_pictureSelection)
+            setSelection(std::move(kept), std::move(keptPictures));
     });
     connect(this, &EditorState::currentFrameChanged, this, [this] {
-        if (!m_selection.empty())
+        if (hasSelection())
             setSelectedStrokes({});
         const model::Id current = currentFrameId();
         if (!m_frameSelection.empty() && std::find(m_frameSelection.begin(), m_frameSelection.end(),
@@ -100,6 +106,7 @@ void EditorState::keepTickInCel()
 void EditorState::followLayer()
 {
     m_selection.clear();
+    m_pictureSelection.clear();
     const std::vector<model::Frame> &cels = m_doc->frames();
     int index = model::celAt(cels, m_tick);
     if (index < 0)
@@ -244,10 +251,17 @@ void EditorState::setCurrentGroupId(model::Id groupId)
 
 void EditorState::setSelectedStrokes(std::vector<model::Id> strokeIds)
 {
-    if (strokeIds == m_selection)
+    setSelection(std::move(strokeIds), {});
+}
+
+void EditorState::setSelection(std::vector<model::Id> strokeIds,
+                               std::vector<model::Id> pictureObjectIds)
+{
+    if (strokeIds == m_selection && pictureObjectIds == m_pictureSelection)
         return;
     m_selection = std::move(strokeIds);
-    if (!m_selection.empty())
+    m_pictureSelection = std::move(pictureObjectIds);
+    if (hasSelection())
         setSelectedCels({});
     emit selectionChanged();
 }

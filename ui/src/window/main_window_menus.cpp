@@ -244,7 +244,7 @@ void MainWindow::createEditMenu()
 
 void MainWindow::updateEditActions()
 {
-    const bool selected = !m_state->selectedStrokes().empty();
+    const bool selected = m_state->hasSelection();
     const bool cels = !m_state->selectedCels().empty();
     for (const char *name : {"edit.cut", "edit.copy", "edit.delete"})
         if (QAction *a = action(QString::fromLatin1(name)))

@@ -26,4 +26,22 @@ private:
     std::vector<Id> m_ids;
 };
 
+// Gives object `groupId` the picture `picture` (null: the object keeps no picture) as one undo
+// step named `text`: a move, turn or scale of a picture object (movedPicture), or taking its
+// picture away. The object's pose is dropped as by any rest edit (apply it first to keep it);
+// undo puts back the picture and the pose as they were. Obsolete when the object is not there.
+class SetPictureCommand : public DocumentCommand {
+public:
+    SetPictureCommand(Document *doc, Id groupId, std::shared_ptr<const ObjectPicture> picture,
+                      const QString &text, QUndoCommand *parent = nullptr);
+    void redo() override;
+    void undo() override;
+
+private:
+    Id m_groupId;
+    std::shared_ptr<const ObjectPicture> m_old;
+    std::shared_ptr<const ObjectPicture> m_new;
+    DeformedStrokesPtr m_oldDeformed;
+};
+
 } // namespace finbook::model

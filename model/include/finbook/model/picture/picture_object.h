@@ -17,6 +17,7 @@
 #include <QImage>
 #include <QPainter>
 #include <QRectF>
+#include <QTransform>
 
 #include <Eigen/Core>
 
@@ -45,15 +46,17 @@ using PictureMeshPtr = std::shared_ptr<const PictureMesh>;
 struct ObjectPicture {
     PictureDataPtr data;
     PictureMeshPtr mesh;
-    QPointF origin; // where the picture's top-left corner lies on the rest drawing (canvas px)
+    // Where the picture lies on the rest drawing: picture pixels → canvas px, affine (a move,
+    // a turn, a scale; a translation to where its top-left corner lies when it comes in).
+    QTransform place;
 
-    // The texture mesh's vertices on the rest drawing (uv + origin), n×2.
+    // The texture mesh's vertices on the rest drawing (place applied to uv), n×2.
     Eigen::MatrixX2d restVertices() const;
-    // The picture's rectangle on the rest drawing.
+    // The bounding box of the picture's rectangle on the rest drawing.
     QRectF restRect() const;
     friend bool operator==(const ObjectPicture &a, const ObjectPicture &b)
     {
-        return a.data == b.data && a.mesh == b.mesh && a.origin == b.origin;
+        return a.data == b.data && a.mesh == b.mesh && a.place == b.place;
     }
 };
 
@@ -85,7 +88,16 @@ geometry::Region pictureRegion(const ObjectPicture &picture);
 Expected<std::vector<StrokeGroup>, QString> pictureObjectsFromFile(const QString &path,
                                                                    QSizeF page);
 
-// Whether the group's picture, if any, is whole: pixels, a mesh whose indices are in range.
+// Whether a placement can carry a picture: affine, finite, not flattened (|det| ≥ 1e-6), no
+// farther than 1e7 px.
+bool validPicturePlace(const QTransform &place);
+
+// The same picture placed by `place` followed by `by` (a move, turn or scale of the object).
+std::shared_ptr<const ObjectPicture> movedPicture(const ObjectPicture &picture,
+                                                  const QTransform &by);
+
+// Whether the group's picture, if any, is whole: pixels, a mesh whose indices are in range, a
+// valid place.
 bool pictureIsValid(const ObjectPicture &picture);
 
 // The texture mesh's vertices as the object shows them now: its pose's when it is deformed and

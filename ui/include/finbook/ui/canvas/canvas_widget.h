@@ -94,7 +94,8 @@ public:
     std::optional<QPointF> cursorPos() const;
 
     // --- for tools
-    // Strokes left out of the cached frame while a tool draws them itself (transform preview).
+    // Strokes left out of the cached frame while a tool draws them itself (transform preview);
+    // a picture object's id leaves out its picture.
     void setSuppressedStrokes(std::vector<model::Id> strokeIds);
     // Repaints the widget area covering `canvasRect` (an empty rect repaints everything).
     void updateCanvasRect(const QRectF &canvasRect = {});

@@ -72,6 +72,7 @@ private:
     QPointF m_grabbed;      // dragged corner while scaling
     QTransform m_transform; // live transform of the drag
     std::vector<model::Id> m_dragged;
+    std::vector<model::Id> m_draggedPictures; // picture objects moving with the strokes
 };
 
 } // namespace finbook::ui

@@ -36,6 +36,11 @@ public:
 
     // Selected strokes (lasso), all in the current frame. Cleared when the frame changes.
     const std::vector<model::Id> &selectedStrokes() const { return m_selection; }
+    // Picture objects whose picture is selected (a click on it, or a lasso around it), in the
+    // current frame; moved, turned, scaled and deleted with the strokes. Setting the strokes
+    // alone clears them; both cleared when the frame changes.
+    const std::vector<model::Id> &selectedPictures() const { return m_pictureSelection; }
+    bool hasSelection() const { return !m_selection.empty() || !m_pictureSelection.empty(); }
 
     // Frames picked together in the timeline (Ctrl/Shift-click), as indices in document order;
     // just the current frame when no other is picked. A current frame outside the picked
@@ -64,6 +69,7 @@ public slots:
     void setCurrentFrameIndex(int index);
     void setCurrentGroupId(model::Id groupId);
     void setSelectedStrokes(std::vector<model::Id> strokeIds);
+    void setSelection(std::vector<model::Id> strokeIds, std::vector<model::Id> pictureObjectIds);
     void setSelectedFrames(std::vector<model::Id> frameIds);
     void setSelectedCels(std::vector<model::Id> celIds);
     void setOnionSkin(const OnionSkin &onion);
@@ -105,6 +111,7 @@ private:
     int m_frameIndex = 0;
     model::Id m_groupId = model::kNoId;
     std::vector<model::Id> m_selection;
+    std::vector<model::Id> m_pictureSelection;
     std::vector<model::Id> m_frameSelection;
     std::vector<model::Id> m_celSelection;
     OnionSkin m_onion;
