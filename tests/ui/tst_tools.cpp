@@ -14,6 +14,7 @@
 #include <finbook/ui/tools/tool_select.h>
 #include <finbook/ui/window/editor_state.h>
 
+#include <QPainter>
 #include <QSignalSpy>
 #include <QtEndian>
 #include <QtTest>
@@ -43,6 +44,7 @@ private slots:
     void eraserDragWithoutHitsLeavesNoUndoStep();
     void lassoSelectsMostlyInsideStrokes();
     void picturesAreSelectedMovedAndDeleted();
+    void aPicturePaintedInAChildWidgetLandsWhereItIsDrawn();
     void clickSelectsStrokeUnderCursor();
     void dragMovesSelectionAndUndoRestoresExactly();
     void cornerHandleScalesSelection_data();
@@ -480,6 +482,48 @@ void TestTools::picturesAreSelectedMovedAndDeleted()
     QCOMPARE(strokeCount(0), 1);
     m_doc->undoStack()->undo();
     QVERIFY(m_doc->group(picture) && m_doc->group(picture)->picture == before);
+}
+
+namespace {
+// A widget that paints a picture object as a tool overlay does.
+class PictureWidget : public QWidget {
+public:
+    model::StrokeGroup group;
+    using QWidget::QWidget;
+
+protected:
+    void paintEvent(QPaintEvent *) override
+    {
+        QPainter painter(this);
+        painter.translate(10, 5);
+        model::paintPicture(painter, group);
+    }
+};
+} // namespace
+
+// A widget is painted into its window's backing store at its offset there; the overlay's
+// picture must land where the widget paints it, not that offset farther (it did once: drawn
+// through deviceTransform(), which holds the offset, then placed by a painter adding it again).
+void TestTools::aPicturePaintedInAChildWidgetLandsWhereItIsDrawn()
+{
+    QImage painted(20, 10, QImage::Format_ARGB32_Premultiplied);
+    painted.fill(QColor(220, 20, 20));
+    auto made = model::makePictureObject(model::PictureLayer{QStringLiteral("red"), painted, {}},
+                                         QPointF(0, 0));
+    QVERIFY(made.hasValue());
+    QWidget parent;
+    parent.resize(200, 150);
+    auto *child = new PictureWidget(&parent);
+    child->group = *made;
+    child->setGeometry(50, 40, 100, 80);
+    const QImage shot = parent.grab().toImage();
+    const qreal dpr = shot.devicePixelRatio();
+    const auto at = [&](int x, int y) {
+        return shot.pixelColor(QPoint(int(x * dpr), int(y * dpr)));
+    };
+    QCOMPARE(at(50 + 10 + 10, 40 + 5 + 5), QColor(220, 20, 20));   // inside, where it is drawn
+    QVERIFY(at(50 + 10 + 30, 40 + 5 + 5) != QColor(220, 20, 20));  // beside it: not drawn
+    QVERIFY(at(50 + 60 + 10, 40 + 45 + 5) != QColor(220, 20, 20)); // one offset farther: not
 }
 
 void TestTools::deleteSelection()

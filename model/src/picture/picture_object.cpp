@@ -318,9 +318,11 @@ void paintPicture(QPainter &painter, const StrokeGroup &group, const std::option
     if (!group.picture || !pictureIsValid(*group.picture) || !painter.device())
         return;
     // Device pixels (a high-density picture's included): the scratch image is drawn at the
-    // device's own resolution, then laid on it unscaled.
+    // device's own resolution, then laid on it unscaled. From the painter's own coordinates,
+    // not deviceTransform(): a widget painted into its window's backing store has the widget's
+    // offset there too, which the painter adds again when the image is drawn.
     const qreal dpr = std::max(1.0, painter.device()->devicePixelRatioF());
-    const QTransform view = painter.deviceTransform();
+    const QTransform view = painter.combinedTransform() * QTransform::fromScale(dpr, dpr);
     const QSize deviceSize(int(std::ceil(painter.device()->width() * dpr)),
                            int(std::ceil(painter.device()->height() * dpr)));
     const QRect box = shownOn(shownPictureBounds(group), view, deviceSize);
