@@ -92,9 +92,12 @@ Expected<PictureMeshPtr, QString> meshPicture(const QImage &image, double densit
     return PictureMeshPtr(std::move(out));
 }
 
-Expected<StrokeGroup, QString> makePictureObject(const PictureLayer &layer, QPointF at)
+namespace {
+
+// `image` as a picture with its texture mesh, its top-left corner at `at`.
+Expected<std::shared_ptr<const ObjectPicture>, QString> newPicture(const QImage &image, QPointF at)
 {
-    auto data = makePictureData(layer.image);
+    auto data = makePictureData(image);
     if (!data)
         return unexpected(data.error());
     auto mesh = meshPicture((*data)->image);
@@ -104,9 +107,19 @@ Expected<StrokeGroup, QString> makePictureObject(const PictureLayer &layer, QPoi
     picture->data = std::move(*data);
     picture->mesh = std::move(*mesh);
     picture->place = QTransform::fromTranslate(at.x(), at.y());
+    return std::shared_ptr<const ObjectPicture>(std::move(picture));
+}
+
+} // namespace
+
+Expected<StrokeGroup, QString> makePictureObject(const PictureLayer &layer, QPointF at)
+{
+    auto picture = newPicture(layer.image, at);
+    if (!picture)
+        return unexpected(picture.error());
     StrokeGroup group;
     group.name = layer.name;
-    group.picture = std::move(picture);
+    group.picture = std::move(*picture);
     return group;
 }
 
@@ -217,17 +230,7 @@ Expected<std::shared_ptr<const ObjectPicture>, QString> bakedPicture(const Strok
             QT_TRANSLATE_NOOP("PictureImport", "There is not enough memory for the picture.")));
     image.fill(Qt::transparent);
     drawPicture(image, QTransform::fromTranslate(-topLeft.x(), -topLeft.y()), group);
-    auto data = makePictureData(image);
-    if (!data)
-        return unexpected(data.error());
-    auto mesh = meshPicture((*data)->image);
-    if (!mesh)
-        return unexpected(mesh.error());
-    auto picture = std::make_shared<ObjectPicture>();
-    picture->data = std::move(*data);
-    picture->mesh = std::move(*mesh);
-    picture->place = QTransform::fromTranslate(topLeft.x(), topLeft.y());
-    return std::shared_ptr<const ObjectPicture>(std::move(picture));
+    return newPicture(image, QPointF(topLeft));
 }
 
 bool pictureShowsAt(const StrokeGroup &group, QPointF pos)
