@@ -9,6 +9,9 @@
 #include "../finbook_file_reader.h"
 #include "picture_decode.h"
 
+#include <QBuffer>
+#include <QImageReader>
+
 #include <cmath>
 #include <unordered_map>
 
@@ -168,6 +171,21 @@ void Reader::readPictureSection(Cursor &c)
                                                     .arg(tooLarge));
             auto data = std::make_shared<PictureData>();
             data->png = QByteArray(png, qsizetype(pngBytes));
+            if (m_mode == ParseMode::Check) {
+                // Saving checks its own output: the PNG it just wrote, of pixels it had, need
+                // not be decoded again; its header must still say the size the entry says.
+                QBuffer buffer(&data->png);
+                QImageReader header(&buffer, "png");
+                if (header.size() != QSize(int(width), int(height)))
+                    c.fail(FileErrorCode::BadValue,
+                           FinbookFile::tr("picture %1 does not decode: %2")
+                               .arg(i + 1)
+                               .arg(header.errorString()));
+                entry.data = std::move(data);
+                entry.mesh = std::move(mesh);
+                m_pictureTable.push_back(std::move(entry));
+                continue;
+            }
             auto image = picture_detail::decodePicture(data->png, &budget, false);
             if (!image)
                 c.fail(FileErrorCode::Damaged, FinbookFile::tr("picture %1 does not decode: %2")
@@ -245,7 +263,6 @@ void Reader::resolvePictures(Cursor &c)
     }
     // Objects sharing a pose share its copy with the picture's vertices too, so that the file
     // saves again as it was.
-    std::map<std::pair<const DeformedStrokes *, const PendingPicture *>, DeformedStrokesPtr> posed;
     std::map<const DeformedStrokes *,
              std::vector<std::pair<const std::vector<QPointF> *, DeformedStrokesPtr>>>
         copies;
