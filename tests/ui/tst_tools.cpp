@@ -14,6 +14,7 @@
 #include <finbook/ui/tools/tool_select.h>
 #include <finbook/ui/window/editor_state.h>
 
+#include <QClipboard>
 #include <QPainter>
 #include <QSignalSpy>
 #include <QtEndian>
@@ -473,6 +474,13 @@ void TestTools::picturesAreSelectedMovedAndDeleted()
     drag(m_canvas.get(), lasso);
     QCOMPARE(m_state->selectedPictures(), std::vector<model::Id>{picture});
     QCOMPARE(m_state->selectedStrokes(), std::vector<model::Id>{near});
+    // Copy puts the picked picture on the clipboard as it shows (for other programs and Paste).
+    m_state->setSelection({}, {picture});
+    QVERIFY(ui::StrokeEditing::copySelection(*m_state));
+    const QImage copied = QApplication::clipboard()->image();
+    QCOMPARE(copied.size(), painted.size());
+    QCOMPARE(copied.pixelColor(40, 30), QColor(30, 120, 200));
+    QApplication::clipboard()->clear();
     // Escape drops the pick; Delete with the picture picked removes its object, undoably.
     QTest::keyClick(m_canvas.get(), Qt::Key_Escape);
     QVERIFY(!m_state->hasSelection());

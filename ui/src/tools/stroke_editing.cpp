@@ -3,6 +3,7 @@
 #include <finbook/model/commands.h>
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/picture/picture_commands.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
@@ -330,13 +331,50 @@ std::vector<ClipboardFill> StrokeEditing::selectedFills(const EditorState &state
     return fills;
 }
 
+namespace {
+
+// The picked pictures as they show, in drawing order, on one transparent picture the size of
+// their bounds (what another program, or Finbook's own Paste, takes from the clipboard).
+QImage selectedPicturesImage(const EditorState &state)
+{
+    const model::Frame *frame = state.currentFrame();
+    const std::vector<model::Id> &picked = state.selectedPictures();
+    if (!frame || picked.empty())
+        return {};
+    std::vector<const model::StrokeGroup *> groups;
+    QRectF bounds;
+    for (const model::StrokeGroup &g : frame->groups)
+        if (g.picture && std::find(picked.begin(), picked.end(), g.id) != picked.end()) {
+            groups.push_back(&g);
+            bounds |= model::shownPictureBounds(g);
+        }
+    const QRect box = bounds.toAlignedRect();
+    if (groups.empty() || box.isEmpty() || box.width() > model::kMaxPictureSide ||
+        box.height() > model::kMaxPictureSide)
+        return {};
+    QImage image(box.size(), QImage::Format_ARGB32_Premultiplied);
+    if (image.isNull())
+        return {};
+    image.fill(Qt::transparent);
+    for (const model::StrokeGroup *g : groups)
+        model::drawPicture(image, QTransform::fromTranslate(-box.left(), -box.top()), *g);
+    return image;
+}
+
+} // namespace
+
 bool StrokeEditing::copySelection(const EditorState &state)
 {
     const std::vector<model::StrokeDataPtr> data = selectedData(state);
-    if (data.empty())
+    const QImage pictures = selectedPicturesImage(state);
+    if (data.empty() && pictures.isNull())
         return false;
     auto *mime = new QMimeData;
-    mime->setData(QString::fromLatin1(kStrokesMimeType), encodeStrokes(data, selectedFills(state)));
+    if (!data.empty())
+        mime->setData(QString::fromLatin1(kStrokesMimeType),
+                      encodeStrokes(data, selectedFills(state)));
+    if (!pictures.isNull())
+        mime->setImageData(pictures);
     QApplication::clipboard()->setMimeData(mime);
     return true;
 }

@@ -196,11 +196,14 @@ void MainWindow::createEditMenu()
             report(problem);
             return;
         }
-        // A picture another program copied (and no strokes of ours): a picture object.
+        // A picture (another program's, or pictures copied here): a picture object; with
+        // copied strokes too, those come next.
         const QMimeData *mime = QApplication::clipboard()->mimeData();
-        if (!StrokeEditing::clipboardHasStrokes() && mime && mime->hasImage()) {
-            pastePicture(qvariant_cast<QImage>(mime->imageData()), m_canvas->cursorPos());
-            return;
+        if (mime && mime->hasImage()) {
+            const bool strokes = StrokeEditing::clipboardHasStrokes();
+            if (!pastePicture(qvariant_cast<QImage>(mime->imageData()), m_canvas->cursorPos()) ||
+                !strokes)
+                return;
         }
         // At the mouse when it is over the canvas; selected, with the select tool's box shown.
         if (StrokeEditing::paste(*m_state, &problem, m_canvas->cursorPos()))

@@ -83,6 +83,8 @@ public:
     // The fills of the current frame whose region is bounded by selected strokes only: the
     // ones a copy of the selection carries.
     static std::vector<ClipboardFill> selectedFills(const EditorState &state);
+    // The picked strokes in Finbook's own format and the picked pictures as one picture (as
+    // they show), which other programs and Paste take.
     static bool copySelection(const EditorState &state);
     static bool cutSelection(EditorState &state);
     // Pastes clipboard strokes (and the fills copied with them, in the regions they make
