@@ -3,6 +3,7 @@
 #include "finbook_file_byte_writer.h"
 #include "finbook_file_format.h"
 #include "io/crc32c.h"
+#include "picture/picture_section.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -142,6 +143,7 @@ private:
 struct FrameUses {
     qint64 lastStroke = -1;
     qint64 lastPose = -1;
+    qint64 lastPicture = -1; // of PICT, by the objects' PICO chunks
 };
 
 // Walks the frame record (layout in finbook_file_format.h) only as far as needed to find the
@@ -169,6 +171,8 @@ FrameUses frameUses(const QByteArray &frame)
             const qint64 chunkLength = u32At(frame, p + 4);
             if (chunk == kTagDeformed && chunkLength >= 4 && p + 12 <= end)
                 uses.lastPose = std::max<qint64>(uses.lastPose, u32At(frame, p + 8));
+            if (chunk == kTagPictureObject && chunkLength >= 4 && p + 12 <= end)
+                uses.lastPicture = std::max<qint64>(uses.lastPicture, u32At(frame, p + 8));
             p += qint64(kChunkHeaderBytes) + chunkLength;
         }
         at = end;
@@ -214,10 +218,25 @@ QByteArray poseEntry(SectionReader &in)
     return bytes;
 }
 
+// One picture of "PICT" (picture/picture_section.h): its size, PNG and texture mesh.
+QByteArray pictureEntry(SectionReader &in)
+{
+    QByteArray bytes = in.read(4 + 4 + 8);
+    bytes += in.read(qint64(qFromLittleEndian<quint64>(bytes.constData() + 8)));
+    const QByteArray vertices = in.read(4);
+    bytes += vertices;
+    bytes += in.read(qint64(u32At(vertices, 0)) * qint64(kPictureVertexBytes));
+    const QByteArray triangles = in.read(4);
+    bytes += triangles;
+    bytes += in.read(qint64(u32At(triangles, 0)) * qint64(kPictureTriangleBytes));
+    return bytes;
+}
+
 struct Layout {
     quint32 version = 0;
     Section document, strokes, poses, frames;
-    Section light; // "lite" (shaded fills' light), when the file has one
+    Section pictures; // "PICT", when objects show pictures: located, read as far as needed
+    Section light;    // "lite" (shaded fills' light), when the file has one
 };
 
 // The section list up to the frames: the header checked, each section's bounds checked,
@@ -280,6 +299,10 @@ Layout readLayout(FileReader &file, qint64 wholeSectionBytes)
                     model::io::crc32c(model::io::crc32c(0, header.constData(), header.size()),
                                       bytes.constData(), std::size_t(length)))
                 throw Broken{FileErrorCode::Damaged};
+        } else if (t == kTagPictures && next == std::size(order) && layout.pictures.payload < 0) {
+            // The pictures: the first frame's are taken from it (firstFrameFile).
+            layout.pictures.payload = payload;
+            layout.pictures.length = qint64(length);
         } else if ((t == kTagSound || t == kTagCamera || t == kTagLayers || t == kTagSwap) &&
                    next == std::size(order)) {
             // A sound clip (or a huge camera, layer list or set of swap drawings): its bytes
@@ -334,6 +357,12 @@ QByteArray firstFrameFile(FileReader &file, qint64 wholeSectionBytes)
     const QByteArray strokes = tablePrefix(file, layout.strokes, uses.lastStroke + 1,
                                            qint64(kStrokeDataHeaderBytes), strokeEntry);
     const QByteArray poses = tablePrefix(file, layout.poses, uses.lastPose + 1, 4, poseEntry);
+    // The pictures the first frame shows (and those before them in the table); none when it
+    // shows none. A frame naming pictures the file lacks is the model reader's to refuse.
+    const QByteArray pictures = uses.lastPicture >= 0 && layout.pictures.payload >= 0
+                                    ? tablePrefix(file, layout.pictures, uses.lastPicture + 1,
+                                                  qint64(kPictureFixedBytes), pictureEntry)
+                                    : QByteArray();
     QByteArray frameList(4, '\0');
     qToLittleEndian<quint32>(frameCount > 0 ? 1 : 0, frameList.data());
     if (frameCount > 0) {
@@ -342,14 +371,17 @@ QByteArray firstFrameFile(FileReader &file, qint64 wholeSectionBytes)
         frameList += length + frame;
     }
     const bool crc = layout.version >= kFirstVersionWithCrc;
-    ByteWriter w(qsizetype(kHeaderBytes) + 5 * qsizetype(kSectionHeaderBytes + 4) +
-                 layout.document.whole.size() + strokes.size() + poses.size() + frameList.size());
+    ByteWriter w(qsizetype(kHeaderBytes) + 6 * qsizetype(kSectionHeaderBytes + 4) +
+                 layout.document.whole.size() + strokes.size() + poses.size() + frameList.size() +
+                 pictures.size());
     w.raw(kMagic, sizeof(kMagic));
     w.u32(layout.version);
     writeSection(w, kTagDocument, layout.document.whole, crc);
     writeSection(w, kTagStrokes, strokes, crc);
     writeSection(w, kTagPoses, poses, crc);
     writeSection(w, kTagFrames, frameList, crc);
+    if (!pictures.isNull())
+        writeSection(w, kTagPictures, pictures, crc);
     if (!layout.light.whole.isNull())
         writeSection(w, kTagLight, layout.light.whole, crc);
     writeSection(w, kTagEnd, QByteArray(), crc);

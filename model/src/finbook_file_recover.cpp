@@ -11,8 +11,8 @@ namespace finbook::model {
 namespace file_format {
 
 namespace {
-constexpr quint32 kSectionTags[] = {kTagDocument, kTagStrokes, kTagPoses, kTagFrames, kTagSound,
-                                    kTagCamera,   kTagLayers,  kTagSwap,  kTagEnd};
+constexpr quint32 kSectionTags[] = {kTagDocument, kTagStrokes, kTagPoses, kTagFrames,   kTagSound,
+                                    kTagCamera,   kTagLayers,  kTagSwap,  kTagPictures, kTagEnd};
 
 // Whether a section that reads starts at `p`: a tag from `tags`, a length that fits and, from
 // format 2 on, a checksum that matches.
