@@ -2564,84 +2564,85 @@
         <translation>%1; die Austauschsätze werden weggelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="103"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="104"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="233"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="106"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="107"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="251"/>
         <source>the pictures</source>
         <translation>die Bilder</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="115"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="118"/>
         <source>picture %1 is cut off</source>
         <translation>Bild %1 ist abgeschnitten</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="121"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="124"/>
         <source>picture %1&apos;s mesh has %2 vertices</source>
         <translation>das Netz von Bild %1 hat %2 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="130"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="133"/>
         <source>picture %1&apos;s mesh has a vertex outside the picture</source>
         <translation>das Netz von Bild %1 hat eine Ecke außerhalb des Bildes</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="137"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="140"/>
         <source>picture %1&apos;s mesh has no triangles</source>
         <translation>das Netz von Bild %1 hat keine Dreiecke</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="145"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="148"/>
         <source>picture %1&apos;s mesh names a vertex it does not have</source>
         <translation>das Netz von Bild %1 nennt eine Ecke, die es nicht hat</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="154"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="157"/>
         <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
         <translation>das Netz von Bild %1 hat ein umgeklapptes Dreieck oder eines ohne Fläche</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="164"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="167"/>
         <source>picture %1 is %2 × %3 pixels: %4</source>
         <translation>Bild %1 ist %2 × %3 Pixel groß: %4</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="181"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="191"/>
         <source>picture %1 does not decode: %2</source>
         <translation>Bild %1 lässt sich nicht dekodieren: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="178"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="196"/>
         <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
         <translation>Bild %1 ist %2 × %3 Pixel groß, nicht %4 × %5 wie angegeben</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="190"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="208"/>
         <source>%1; the objects showing it are left without it</source>
         <translation>%1; die Objekte, die es zeigen, bleiben ohne Bild</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="202"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="220"/>
         <source>the object&apos;s picture</source>
         <translation>das Bild des Objekts</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="210"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="228"/>
         <source>the picture&apos;s place is out of range</source>
         <translation>die Lage des Bildes liegt außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="218"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="236"/>
         <source>the picture&apos;s pose has a point out of range</source>
         <translation>die Pose des Bildes hat einen Punkt außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="241"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="259"/>
         <source>an object shows picture %1, which the file does not hold</source>
         <translation>ein Objekt zeigt Bild %1, das die Datei nicht enthält</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="267"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="284"/>
         <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
         <translation>die Pose eines Bildes passt nicht zu seinem Netz; es wird in Ruhe gezeigt</translation>
     </message>
@@ -2924,7 +2925,7 @@
     </message>
     <message>
         <location filename="../model/src/picture/picture_object.cpp" line="48"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="217"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="236"/>
         <source>There is not enough memory for the picture.</source>
         <translation>Für das Bild ist nicht genug Speicher da.</translation>
     </message>
@@ -2949,12 +2950,12 @@
         <translation>Der Umriss des Bildes lässt sich nicht vernetzen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="199"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="218"/>
         <source>The object has no picture.</source>
         <translation>Das Objekt hat kein Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="210"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="229"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>Das posierte Bild ist zu groß, um es zu behalten (höchstens %1 Pixel breit und hoch).</translation>
     </message>
@@ -3256,53 +3257,53 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="128"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="129"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="150"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="151"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="189"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="190"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (Pose angewendet)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
         <source>Delete Picture</source>
         <translation>Bild löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="349"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="387"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="425"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="463"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="435"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="436"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="473"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="474"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -3310,27 +3311,27 @@
 <context>
     <name>Thumbnail</name>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="53"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="54"/>
         <source>it is not a regular file</source>
         <translation>es ist keine gewöhnliche Datei</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="361"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="393"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Für „%1“ kann keine Vorschau erstellt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="442"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>eine Prüfsumme stimmt nicht, die Datei ist also beschädigt.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="412"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="444"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>sie enthält Daten, die diese Version von Finbook nicht kennt.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="415"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="447"/>
         <source>the file is damaged or incomplete.</source>
         <translation>die Datei ist beschädigt oder unvollständig.</translation>
     </message>
@@ -5147,7 +5148,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window.cpp" line="354"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="396"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="435"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -5157,33 +5158,33 @@
         <translation>%1[*] – Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="38"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook-Animationen (*.finbook);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="48"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="49"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="83"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="138"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="84"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="139"/>
         <source>Cannot Open File</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="174"/>
         <source>Cannot Save File</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="180"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="146"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Lesbare Teile von %1 geöffnet (%n Problem behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
@@ -5191,55 +5192,64 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="101"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="106"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="102"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="107"/>
         <source>Cannot Open the Example</source>
         <translation>Das Beispiel lässt sich nicht öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="112"/>
         <source>The example walk cycle: change it and save it as your own.</source>
         <translation>Der Beispiel-Laufzyklus: ändere ihn und speichere ihn als deinen eigenen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="239"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="249"/>
         <source>Cannot Import Mesh</source>
         <translation>Netz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="361"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
         <source>Reading &quot;%1&quot;...</source>
         <translation>„%1“ wird gelesen …</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="344"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="362"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Import Picture</source>
         <translation>Bild importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="323"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="374"/>
         <source>Cannot Import Picture</source>
         <translation>Bild kann nicht importiert werden</translation>
     </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="345"/>
+        <source>&quot;%1&quot; stands on a flat background (%2). Make that colour transparent, so that the object is only what is drawn on it?</source>
+        <translation>„%1“ steht auf einem einfarbigen Hintergrund (%2). Diese Farbe durchsichtig machen, damit das Objekt nur aus dem besteht, was darauf gezeichnet ist?</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="348"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="387"/>
         <source>Imported &quot;%1&quot;: %n picture object(s).</source>
         <translation>
             <numerusform>„%1“ importiert: %n Bildobjekt.</numerusform>
@@ -5247,57 +5257,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="358"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="397"/>
         <source>Pasted picture</source>
         <translation>Eingefügtes Bild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
         <source>Reading the pasted picture...</source>
         <translation>Das eingefügte Bild wird gelesen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="371"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
         <source>Pasted a picture as an object.</source>
         <translation>Ein Bild wurde als Objekt eingefügt.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="384"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="423"/>
         <source>Damaged File</source>
         <translation>Beschädigte Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="424"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>„Trotzdem öffnen“ zeigt den noch lesbaren Inhalt als neue, ungespeicherte Animation an; die beschädigte Datei wird nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="388"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="427"/>
         <source>Open Anyway</source>
         <translation>Trotzdem öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="398"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="437"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="399"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="438"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>„%1“ hat ungespeicherte Änderungen. Vorher speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="405"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="444"/>
         <source>Open Animation</source>
         <translation>Animation öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="411"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="450"/>
         <source>Save Animation</source>
         <translation>Animation speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="412"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="451"/>
         <source>untitled.finbook</source>
         <translation>unbenannt.finbook</translation>
     </message>
@@ -5402,7 +5412,7 @@
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
@@ -5423,162 +5433,162 @@
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="213"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="278"/>
         <source>Rotate View &amp;Left</source>
         <translation>Ansicht nach &amp;links drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>Rotate View &amp;Right</source>
         <translation>Ansicht nach &amp;rechts drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
         <source>R&amp;eset View Rotation</source>
         <translation>Dre&amp;hung der Ansicht zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
         <source>Mirror Vie&amp;w</source>
         <translation>Ansicht sp&amp;iegeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="305"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
         <source>&amp;Camera View</source>
         <translation>Kamera&amp;ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="316"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Andere Ebenen ab&amp;dunkeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="323"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="332"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="345"/>
         <source>&amp;Layer</source>
         <translation>Ebe&amp;ne</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="349"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="352"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="373"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="381"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="380"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="383"/>
         <source>Finbook &amp;Manual</source>
         <translation>Finbook-&amp;Handbuch</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="388"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="387"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="390"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="417"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="420"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="441"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="444"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="442"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="445"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>

@@ -2564,84 +2564,85 @@
         <translation>%1 ; les jeux de dessins sont laissés de côté</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="103"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="104"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="233"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="106"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="107"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="251"/>
         <source>the pictures</source>
         <translation>les images</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="115"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="118"/>
         <source>picture %1 is cut off</source>
         <translation>l’image %1 est tronquée</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="121"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="124"/>
         <source>picture %1&apos;s mesh has %2 vertices</source>
         <translation>le maillage de l’image %1 a %2 sommets</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="130"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="133"/>
         <source>picture %1&apos;s mesh has a vertex outside the picture</source>
         <translation>le maillage de l’image %1 a un sommet hors de l’image</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="137"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="140"/>
         <source>picture %1&apos;s mesh has no triangles</source>
         <translation>le maillage de l’image %1 n’a pas de triangle</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="145"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="148"/>
         <source>picture %1&apos;s mesh names a vertex it does not have</source>
         <translation>le maillage de l’image %1 désigne un sommet qu’il n’a pas</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="154"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="157"/>
         <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
         <translation>le maillage de l’image %1 a un triangle retourné ou sans aire</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="164"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="167"/>
         <source>picture %1 is %2 × %3 pixels: %4</source>
         <translation>l’image %1 fait %2 × %3 pixels : %4</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="181"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="191"/>
         <source>picture %1 does not decode: %2</source>
         <translation>l’image %1 ne se décode pas : %2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="178"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="196"/>
         <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
         <translation>l’image %1 fait %2 × %3 pixels, et non les %4 × %5 annoncés</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="190"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="208"/>
         <source>%1; the objects showing it are left without it</source>
         <translation>%1 ; les objets qui la montrent restent sans elle</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="202"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="220"/>
         <source>the object&apos;s picture</source>
         <translation>l’image de l’objet</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="210"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="228"/>
         <source>the picture&apos;s place is out of range</source>
         <translation>la position de l’image est hors limites</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="218"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="236"/>
         <source>the picture&apos;s pose has a point out of range</source>
         <translation>la pose de l’image a un point hors limites</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="241"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="259"/>
         <source>an object shows picture %1, which the file does not hold</source>
         <translation>un objet montre l’image %1, que le fichier ne contient pas</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="267"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="284"/>
         <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
         <translation>la pose d’une image ne correspond pas à son maillage ; elle est montrée au repos</translation>
     </message>
@@ -2924,7 +2925,7 @@
     </message>
     <message>
         <location filename="../model/src/picture/picture_object.cpp" line="48"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="217"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="236"/>
         <source>There is not enough memory for the picture.</source>
         <translation>Il n’y a pas assez de mémoire pour l’image.</translation>
     </message>
@@ -2949,12 +2950,12 @@
         <translation>Le contour de l’image ne peut pas être maillé : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="199"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="218"/>
         <source>The object has no picture.</source>
         <translation>L’objet n’a pas d’image.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="210"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="229"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>L’image posée est trop grande pour être gardée (au plus %1 pixels de large et de haut).</translation>
     </message>
@@ -3256,53 +3257,53 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="128"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="129"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="150"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="151"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="189"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="190"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (pose appliquée)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
         <source>Delete Strokes</source>
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
         <source>Delete Picture</source>
         <translation>Supprimer l’image</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="349"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="387"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="425"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="463"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="435"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="436"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="473"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="474"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -3310,27 +3311,27 @@
 <context>
     <name>Thumbnail</name>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="53"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="54"/>
         <source>it is not a regular file</source>
         <translation>ce n&apos;est pas un fichier ordinaire</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="361"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="393"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="442"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>une somme de contrôle ne correspond pas, le fichier est donc endommagé.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="412"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="444"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>il contient des données que cette version de Finbook ne connaît pas.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="415"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="447"/>
         <source>the file is damaged or incomplete.</source>
         <translation>le fichier est endommagé ou incomplet.</translation>
     </message>
@@ -5147,7 +5148,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window.cpp" line="354"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="396"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="435"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
@@ -5177,33 +5178,33 @@
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="38"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Animations Finbook (*.finbook);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="48"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="49"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="83"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="138"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="84"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="139"/>
         <source>Cannot Open File</source>
         <translation>Impossible d&apos;ouvrir le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="174"/>
         <source>Cannot Save File</source>
         <translation>Impossible d&apos;enregistrer le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="180"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="146"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Ce qui était lisible de %1 a été ouvert (%n problème réparé)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
@@ -5211,55 +5212,64 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="101"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="106"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="102"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="107"/>
         <source>Cannot Open the Example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="112"/>
         <source>The example walk cycle: change it and save it as your own.</source>
         <translation>L&apos;exemple de cycle de marche : modifiez-le et enregistrez-le comme le vôtre.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="239"/>
         <source>No recent files</source>
         <translation>Aucun fichier récent</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="249"/>
         <source>Cannot Import Mesh</source>
         <translation>Impossible d&apos;importer le maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="361"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
         <source>Reading &quot;%1&quot;...</source>
         <translation>Lecture de « %1 »…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="344"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="362"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Import Picture</source>
         <translation>Importer une image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="323"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="374"/>
         <source>Cannot Import Picture</source>
         <translation>Impossible d’importer l’image</translation>
     </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="345"/>
+        <source>&quot;%1&quot; stands on a flat background (%2). Make that colour transparent, so that the object is only what is drawn on it?</source>
+        <translation>« %1 » repose sur un fond uni (%2). Rendre cette couleur transparente, pour que l’objet ne soit que ce qui est dessiné dessus ?</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="348"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="387"/>
         <source>Imported &quot;%1&quot;: %n picture object(s).</source>
         <translation>
             <numerusform>« %1 » importé : %n objet image.</numerusform>
@@ -5267,57 +5277,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="358"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="397"/>
         <source>Pasted picture</source>
         <translation>Image collée</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
         <source>Reading the pasted picture...</source>
         <translation>Lecture de l’image collée...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="371"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
         <source>Pasted a picture as an object.</source>
         <translation>Une image a été collée comme objet.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="384"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="423"/>
         <source>Damaged File</source>
         <translation>Fichier endommagé</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="424"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>«&#xa0;Ouvrir quand même&#xa0;» affiche ce qui reste lisible dans une nouvelle animation non enregistrée&#xa0;; le fichier endommagé n&apos;est pas modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="388"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="427"/>
         <source>Open Anyway</source>
         <translation>Ouvrir quand même</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="398"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="437"/>
         <source>Unsaved Changes</source>
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="399"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="438"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>«&#xa0;%1&#xa0;» contient des modifications non enregistrées. Les enregistrer avant de continuer&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="405"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="444"/>
         <source>Open Animation</source>
         <translation>Ouvrir une animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="411"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="450"/>
         <source>Save Animation</source>
         <translation>Enregistrer l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="412"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="451"/>
         <source>untitled.finbook</source>
         <translation>sans-titre.finbook</translation>
     </message>
@@ -5422,7 +5432,7 @@
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>Paste</source>
         <translation>Coller</translation>
@@ -5443,162 +5453,162 @@
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="213"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="278"/>
         <source>Rotate View &amp;Left</source>
         <translation>Tourner la vue à &amp;gauche</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>Rotate View &amp;Right</source>
         <translation>Tourner la vue à &amp;droite</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
         <source>R&amp;eset View Rotation</source>
         <translation>Ré&amp;initialiser la rotation de la vue</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
         <source>Mirror Vie&amp;w</source>
         <translation>Vue en mir&amp;oir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="305"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
         <source>&amp;Camera View</source>
         <translation>Vue &amp;caméra</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="316"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Atténuer les a&amp;utres calques</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="323"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="332"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="345"/>
         <source>&amp;Layer</source>
         <translation>&amp;Calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="349"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="352"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="373"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="381"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="380"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="383"/>
         <source>Finbook &amp;Manual</source>
         <translation>&amp;Manuel de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="388"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="387"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="390"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="417"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="420"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="441"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="444"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="442"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="445"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>

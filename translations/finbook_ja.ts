@@ -2555,84 +2555,85 @@
         <translation>%1。差し替えセットは読み込みません</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="103"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="104"/>
-        <location filename="../model/src/picture/picture_section.cpp" line="233"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="106"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="107"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="251"/>
         <source>the pictures</source>
         <translation>画像</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="115"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="118"/>
         <source>picture %1 is cut off</source>
         <translation>画像 %1 が途中で切れています</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="121"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="124"/>
         <source>picture %1&apos;s mesh has %2 vertices</source>
         <translation>画像 %1 のメッシュの頂点数が %2 です</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="130"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="133"/>
         <source>picture %1&apos;s mesh has a vertex outside the picture</source>
         <translation>画像 %1 のメッシュに画像の外の頂点があります</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="137"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="140"/>
         <source>picture %1&apos;s mesh has no triangles</source>
         <translation>画像 %1 のメッシュに三角形がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="145"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="148"/>
         <source>picture %1&apos;s mesh names a vertex it does not have</source>
         <translation>画像 %1 のメッシュが存在しない頂点を参照しています</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="154"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="157"/>
         <source>picture %1&apos;s mesh has a triangle turned over or without area</source>
         <translation>画像 %1 のメッシュに裏返った三角形か面積のない三角形があります</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="164"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="167"/>
         <source>picture %1 is %2 × %3 pixels: %4</source>
         <translation>画像 %1 は %2 × %3 ピクセルです：%4</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="173"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="181"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="191"/>
         <source>picture %1 does not decode: %2</source>
         <translation>画像 %1 をデコードできません：%2</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="178"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="196"/>
         <source>picture %1 is %2 × %3 pixels, not the %4 × %5 it claims</source>
         <translation>画像 %1 は %2 × %3 ピクセルで、記載の %4 × %5 ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="190"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="208"/>
         <source>%1; the objects showing it are left without it</source>
         <translation>%1。この画像を表示するオブジェクトは画像なしで開きます</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="202"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="220"/>
         <source>the object&apos;s picture</source>
         <translation>オブジェクトの画像</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="210"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="228"/>
         <source>the picture&apos;s place is out of range</source>
         <translation>画像の位置が範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="218"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="236"/>
         <source>the picture&apos;s pose has a point out of range</source>
         <translation>画像のポーズに範囲外の点があります</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="241"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="259"/>
         <source>an object shows picture %1, which the file does not hold</source>
         <translation>オブジェクトがファイルにない画像 %1 を表示しています</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_section.cpp" line="267"/>
+        <location filename="../model/src/picture/picture_section.cpp" line="284"/>
         <source>a picture&apos;s pose does not fit its mesh; it is shown at rest</source>
         <translation>画像のポーズがメッシュと合いません。レストの状態で表示します</translation>
     </message>
@@ -2914,7 +2915,7 @@
     </message>
     <message>
         <location filename="../model/src/picture/picture_object.cpp" line="48"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="217"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="236"/>
         <source>There is not enough memory for the picture.</source>
         <translation>画像のためのメモリが足りません。</translation>
     </message>
@@ -2939,12 +2940,12 @@
         <translation>画像の輪郭をメッシュにできません：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="199"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="218"/>
         <source>The object has no picture.</source>
         <translation>オブジェクトに画像がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="210"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="229"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>ポーズをつけた画像が大きすぎて保持できません（幅と高さは最大 %1 ピクセル）。</translation>
     </message>
@@ -3245,53 +3246,53 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="128"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="129"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="150"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="151"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="189"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="190"/>
         <source>%1 (pose applied)</source>
         <translation>%1（ポーズ適用済み）</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
         <source>Delete Strokes</source>
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="267"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
         <source>Delete Picture</source>
         <translation>画像を削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="349"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="387"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="425"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="463"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="435"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="436"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="473"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="474"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -3299,27 +3300,27 @@
 <context>
     <name>Thumbnail</name>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="53"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="54"/>
         <source>it is not a regular file</source>
         <translation>通常のファイルではありません</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="361"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="393"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>「%1」のサムネイルを作成できません: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="442"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>チェックサムが一致しないため、ファイルが破損しています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="412"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="444"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>このバージョンの Finbook が知らないデータが含まれています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="415"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="447"/>
         <source>the file is damaged or incomplete.</source>
         <translation>ファイルが破損しているか不完全です。</translation>
     </message>
@@ -5128,7 +5129,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window.cpp" line="354"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="396"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="435"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
@@ -5158,145 +5159,154 @@
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="38"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook アニメーション (*.finbook);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="48"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="49"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="83"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="138"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="84"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="139"/>
         <source>Cannot Open File</source>
         <translation>ファイルを開けません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="174"/>
         <source>Cannot Save File</source>
         <translation>ファイルを保存できません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="180"/>
         <source>Saved %1</source>
         <translation>%1 を保存しました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="146"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>%1 の読み取れた部分を開きました（%n 件の問題を修復）。新しい名前で保存してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="101"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="106"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="102"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="107"/>
         <source>Cannot Open the Example</source>
         <translation>見本を開けません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="112"/>
         <source>The example walk cycle: change it and save it as your own.</source>
         <translation>見本の歩きサイクルです。変更して自分のものとして保存できます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="239"/>
         <source>No recent files</source>
         <translation>最近使ったファイルはありません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="249"/>
         <source>Cannot Import Mesh</source>
         <translation>メッシュをインポートできません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="361"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
         <source>Reading &quot;%1&quot;...</source>
         <translation>「%1」を読み込んでいます…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="344"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="362"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Import Picture</source>
         <translation>画像を読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="323"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="374"/>
         <source>Cannot Import Picture</source>
         <translation>画像を読み込めません</translation>
     </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="345"/>
+        <source>&quot;%1&quot; stands on a flat background (%2). Make that colour transparent, so that the object is only what is drawn on it?</source>
+        <translation>「%1」は単色の背景（%2）の上にあります。この色を透明にして、描かれている部分だけをオブジェクトにしますか？</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="348"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="387"/>
         <source>Imported &quot;%1&quot;: %n picture object(s).</source>
         <translation>
             <numerusform>「%1」を読み込みました：画像オブジェクト %n 個。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="358"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="397"/>
         <source>Pasted picture</source>
         <translation>貼り付けた画像</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
         <source>Reading the pasted picture...</source>
         <translation>貼り付けた画像を読み込んでいます...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="371"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
         <source>Pasted a picture as an object.</source>
         <translation>画像をオブジェクトとして貼り付けました。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="384"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="423"/>
         <source>Damaged File</source>
         <translation>破損したファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="424"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>「このまま開く」を選ぶと、まだ読み取れる部分を未保存の新しいアニメーションとして表示します。破損したファイルは変更されません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="388"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="427"/>
         <source>Open Anyway</source>
         <translation>このまま開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="398"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="437"/>
         <source>Unsaved Changes</source>
         <translation>未保存の変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="399"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="438"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>「%1」には保存されていない変更があります。続ける前に保存しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="405"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="444"/>
         <source>Open Animation</source>
         <translation>アニメーションを開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="411"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="450"/>
         <source>Save Animation</source>
         <translation>アニメーションを保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="412"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="451"/>
         <source>untitled.finbook</source>
         <translation>無題.finbook</translation>
     </message>
@@ -5401,7 +5411,7 @@
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
@@ -5422,162 +5432,162 @@
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="213"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="278"/>
         <source>Rotate View &amp;Left</source>
         <translation>表示を左に回転(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>Rotate View &amp;Right</source>
         <translation>表示を右に回転(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
         <source>R&amp;eset View Rotation</source>
         <translation>表示の回転をリセット(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
         <source>Mirror Vie&amp;w</source>
         <translation>表示を左右反転(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="305"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
         <source>&amp;Camera View</source>
         <translation>カメラビュー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="316"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
         <source>&amp;Dim Other Layers</source>
         <translation>他のレイヤーを薄く表示(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="323"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="332"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="345"/>
         <source>&amp;Layer</source>
         <translation>レイヤー(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="349"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="352"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="373"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="378"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="381"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="380"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="383"/>
         <source>Finbook &amp;Manual</source>
         <translation>Finbook マニュアル(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="388"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="387"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="390"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="417"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="420"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="441"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="444"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="442"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="445"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>

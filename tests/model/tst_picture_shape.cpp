@@ -17,6 +17,7 @@ private slots:
     void opaquePictureIsItsRectangle();
     void cutOutPictureFollowsAlpha();
     void keyedOutBackground();
+    void flatBackgroundIsFound();
 };
 
 void TestPictureShape::opaquePictureIsItsRectangle()
@@ -91,6 +92,39 @@ void TestPictureShape::keyedOutBackground()
     QCOMPARE(shape->size(), std::size_t(1));
     QVERIFY(std::abs(geometry::regionArea(*shape) - 25.0 * 20.0) < 1.0 + 0.5 * 90.0);
     QVERIFY(geometry::regionContains(*shape, 30, 20));
+}
+
+void TestPictureShape::flatBackgroundIsFound()
+{
+    QImage scan(100, 80, QImage::Format_RGB32);
+    scan.fill(qRgb(250, 248, 240));
+    {
+        QPainter p(&scan);
+        p.fillRect(QRect(20, 10, 60, 60), QColor(30, 30, 30));
+        p.fillRect(QRect(0, 30, 10, 10), QColor(30, 30, 30)); // a line touching the edge
+    }
+    const auto found = flatBackground(scan);
+    QVERIFY(found.has_value());
+    QCOMPARE(*found, qRgb(250, 248, 240));
+    // Corners of different colours: no flat background.
+    QImage gradient(100, 80, QImage::Format_RGB32);
+    for (int y = 0; y < 80; ++y)
+        for (int x = 0; x < 100; ++x)
+            gradient.setPixel(x, y, qRgb(x * 2, y * 3, 100));
+    QVERIFY(!flatBackground(gradient));
+    // Corners alike but most of the border another colour (a photo whose corners happen to be
+    // alike).
+    QImage framed = scan;
+    {
+        QPainter p(&framed);
+        p.fillRect(QRect(2, 0, 96, 80), QColor(30, 90, 30));
+    }
+    QVERIFY(!flatBackground(framed));
+    // Transparency: the picture has a shape already.
+    QImage clear(50, 50, QImage::Format_ARGB32_Premultiplied);
+    clear.fill(Qt::transparent);
+    QVERIFY(!flatBackground(clear));
+    QVERIFY(!flatBackground(QImage()));
 }
 
 QTEST_GUILESS_MAIN(TestPictureShape)

@@ -25,6 +25,7 @@ private slots:
     void badMeshIsReportedAndChangesNothing();
     void picturesComeInByMenuAndByDrop();
     void pastedPictureBecomesAnObject();
+    void aFlatBackgroundIsKeyedOutWhenAsked();
 
 private:
     std::unique_ptr<test::IsolatedSettings> m_settings;
@@ -34,7 +35,14 @@ namespace {
 class QuietWindow : public ui::MainWindow {
 public:
     QStringList errors;
+    bool keyOut = false;             // the answer to "make the background transparent?"
+    std::vector<QColor> keyOutAsked; // the background colours it was asked about
     void reportError(const QString &, const QString &message) override { errors << message; }
+    bool askKeyOutBackground(const QString &, QColor background) override
+    {
+        keyOutAsked.push_back(background);
+        return keyOut;
+    }
 };
 } // namespace
 
@@ -144,6 +152,49 @@ void TestImportMesh::pastedPictureBecomesAnObject()
     doc->undoStack()->undo();
     QCOMPARE(int(doc->frameAt(0).groups.size()), objects);
     QApplication::clipboard()->clear();
+}
+
+// A drawing exported on white: Import Picture offers to make the white transparent, so the
+// object is the drawing (its shape, its skeleton), not the page; declined, it stays opaque.
+void TestImportMesh::aFlatBackgroundIsKeyedOutWhenAsked()
+{
+    QTemporaryDir dir;
+    QImage scan(120, 90, QImage::Format_RGB32);
+    scan.fill(Qt::white);
+    {
+        QPainter p(&scan);
+        p.setRenderHint(QPainter::Antialiasing, true);
+        p.setBrush(QColor(200, 40, 40));
+        p.setPen(Qt::NoPen);
+        p.drawEllipse(QRectF(30, 20, 60, 50));
+    }
+    const QString path = dir.filePath(QStringLiteral("scan.png"));
+    QVERIFY(scan.save(path));
+    for (const bool answer : {true, false}) {
+        QuietWindow window;
+        window.keyOut = answer;
+        QVERIFY(window.importPicture(path));
+        QCOMPARE(window.keyOutAsked.size(), std::size_t(1));
+        QCOMPARE(window.keyOutAsked.front(), QColor(Qt::white));
+        const model::StrokeGroup &g = window.document()->frameAt(0).groups.back();
+        const QImage &kept = g.picture->data->image;
+        QCOMPARE(qAlpha(kept.pixel(2, 2)), answer ? 0 : 255); // the background
+        QCOMPARE(qAlpha(kept.pixel(60, 45)), 255);            // the drawing
+        QCOMPARE(model::pictureShowsAt(g, g.picture->restRect().topLeft() + QPointF(2, 2)),
+                 !answer);
+    }
+    // A picture with transparency is not asked about.
+    QImage cutOut(40, 40, QImage::Format_ARGB32_Premultiplied);
+    cutOut.fill(Qt::transparent);
+    const QString png = dir.filePath(QStringLiteral("cut.png"));
+    {
+        QPainter p(&cutOut);
+        p.fillRect(QRect(10, 10, 20, 20), Qt::blue);
+    }
+    QVERIFY(cutOut.save(png));
+    QuietWindow window;
+    QVERIFY(window.importPicture(png));
+    QVERIFY(window.keyOutAsked.empty());
 }
 
 void TestImportMesh::badMeshIsReportedAndChangesNothing()

@@ -128,15 +128,21 @@ Expected<std::vector<StrokeGroup>, QString> pictureObjectsFromFile(const QString
     auto layers = readPictureLayers(path);
     if (!layers)
         return unexpected(layers.error());
+    return pictureObjectsFromLayers(*layers, path, page);
+}
+
+Expected<std::vector<StrokeGroup>, QString>
+pictureObjectsFromLayers(const std::vector<PictureLayer> &layers, const QString &path, QSizeF page)
+{
     QRect bounds;
-    for (const PictureLayer &layer : *layers)
+    for (const PictureLayer &layer : layers)
         bounds |= QRect(layer.offset, layer.image.size());
     const QPointF shift =
         QPointF(page.width() / 2.0, page.height() / 2.0) - QRectF(bounds).center();
     // Whole pixels: a picture at rest lands on the page's pixel grid, sharp.
     const QPointF at(std::round(shift.x()), std::round(shift.y()));
     std::vector<StrokeGroup> objects;
-    for (const PictureLayer &layer : *layers) {
+    for (const PictureLayer &layer : layers) {
         auto object = makePictureObject(layer, at + QPointF(layer.offset));
         if (!object)
             return unexpected(picture_detail::importRefusal(path, object.error()));

@@ -46,6 +46,39 @@ QImage keyedOut(const QImage &image, QRgb background, int tolerance)
     return out;
 }
 
+std::optional<QRgb> flatBackground(const QImage &image)
+{
+    if (image.isNull() || image.width() < 2 || image.height() < 2 || !isFullyOpaque(image))
+        return std::nullopt;
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    const auto near = [](QRgb a, QRgb b, int tolerance) {
+        return std::abs(qRed(a) - qRed(b)) <= tolerance &&
+               std::abs(qGreen(a) - qGreen(b)) <= tolerance &&
+               std::abs(qBlue(a) - qBlue(b)) <= tolerance;
+    };
+    const int w = rgb.width(), h = rgb.height();
+    const QRgb corner = rgb.pixel(0, 0);
+    for (const QPoint p : {QPoint(w - 1, 0), QPoint(0, h - 1), QPoint(w - 1, h - 1)})
+        if (!near(rgb.pixel(p), corner, 8))
+            return std::nullopt;
+    qint64 border = 0, same = 0;
+    const auto count = [&](int x, int y) {
+        ++border;
+        same += near(rgb.pixel(x, y), corner, 16) ? 1 : 0;
+    };
+    for (int x = 0; x < w; ++x) {
+        count(x, 0);
+        count(x, h - 1);
+    }
+    for (int y = 1; y < h - 1; ++y) {
+        count(0, y);
+        count(w - 1, y);
+    }
+    if (same * 5 < border * 4)
+        return std::nullopt;
+    return qRgb(qRed(corner), qGreen(corner), qBlue(corner));
+}
+
 Expected<geometry::Region, geometry::GeometryError>
 pictureShape(const QImage &image, const geometry::AlphaOutlineOptions &options)
 {

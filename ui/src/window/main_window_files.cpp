@@ -5,6 +5,7 @@
 #include <finbook/model/import/mesh_import.h>
 #include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/picture/picture_object.h>
+#include <finbook/model/picture/picture_shape.h>
 #include <finbook/model/reference/reference_layer.h>
 #include <finbook/ui/dialogs/file_messages.h>
 #include <finbook/ui/window/editor_state.h>
@@ -337,12 +338,50 @@ bool MainWindow::addPictureObjects(
     return true;
 }
 
+bool MainWindow::askKeyOutBackground(const QString &name, QColor background)
+{
+    return QMessageBox::question(
+               this, tr("Import Picture"),
+               tr("\"%1\" stands on a flat background (%2). Make that colour transparent, so "
+                  "that the object is only what is drawn on it?")
+                   .arg(name, background.name())) == QMessageBox::Yes;
+}
+
 bool MainWindow::importPicture(const QString &path)
 {
     const QSizeF page(m_doc->settings().canvasSize);
     const QString name = QFileInfo(path).fileName();
+    // Read first: a single opaque picture on a flat background (a scan, a drawing exported on
+    // white) may have that background keyed out before it is traced and meshed.
+    auto layers = std::make_shared<Expected<std::vector<model::PictureLayer>, QString>>(
+        unexpected(QString()));
+    {
+        QThread *worker =
+            QThread::create([layers, path] { *layers = model::readPictureLayers(path); });
+        QProgressDialog progress(tr("Reading \"%1\"...").arg(name), QString(), 0, 0, this);
+        progress.setWindowTitle(tr("Import Picture"));
+        progress.setWindowModality(Qt::WindowModal);
+        progress.setMinimumDuration(0);
+        progress.setCancelButton(nullptr);
+        connect(worker, &QThread::finished, &progress, &QDialog::accept);
+        worker->start();
+        if (!worker->isFinished())
+            progress.exec();
+        worker->wait();
+        delete worker;
+    }
+    if (!*layers) {
+        reportError(tr("Cannot Import Picture"), layers->error());
+        return false;
+    }
+    if ((*layers)->size() == 1)
+        if (const auto background = model::flatBackground((*layers)->front().image);
+            background && askKeyOutBackground(name, QColor::fromRgb(*background))) {
+            model::PictureLayer &layer = (*layers)->front();
+            layer.image = model::keyedOut(layer.image, *background, kKeyOutTolerance);
+        }
     return addPictureObjects(
-        [path, page] { return model::pictureObjectsFromFile(path, page); },
+        [layers, path, page] { return model::pictureObjectsFromLayers(**layers, path, page); },
         tr("Reading \"%1\"...").arg(name), tr("Import Picture"),
         [name](int count) {
             return tr("Imported \"%1\": %n picture object(s).", nullptr, count).arg(name);

@@ -87,6 +87,9 @@ geometry::Region pictureRegion(const ObjectPicture &picture);
 // with the whole centred on a page of `page` pixels. Errors: a sentence naming the file.
 Expected<std::vector<StrokeGroup>, QString> pictureObjectsFromFile(const QString &path,
                                                                    QSizeF page);
+// The same from layers already read from `path` (the name its errors give).
+Expected<std::vector<StrokeGroup>, QString>
+pictureObjectsFromLayers(const std::vector<PictureLayer> &layers, const QString &path, QSizeF page);
 
 // Whether a placement can carry a picture: affine, finite, not flattened (|det| ≥ 1e-6), no
 // farther than 1e7 px.

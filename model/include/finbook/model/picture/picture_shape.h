@@ -8,6 +8,8 @@
 
 #include <QImage>
 
+#include <optional>
+
 namespace finbook::model {
 
 // True when every pixel of `image` has alpha 255 (an image without an alpha channel always).
@@ -18,6 +20,12 @@ bool isFullyOpaque(const QImage &image);
 // blue) of `background`'s is cleared; the others keep colour and alpha. The key is hard: an
 // anti-aliased edge keeps the pixels that blend into the background beyond the tolerance.
 QImage keyedOut(const QImage &image, QRgb background, int tolerance);
+
+// The colour of a flat background `image` stands on, if it has one: it is fully opaque, its four
+// corners are one colour (within 8 on each channel) and at least 80 % of its border pixels are
+// that colour (within 16). What keyedOut() takes away when the user wants only the subject (a
+// scan, a drawing exported on white). Nothing for a picture with transparency.
+std::optional<QRgb> flatBackground(const QImage &image);
 
 // The shape of a picture in its own pixels (y down, pixel (i, j) covers [i, i+1] × [j, j+1]):
 // the exact rectangle [0, w] × [0, h] when it is fully opaque, otherwise the outline of its

@@ -141,6 +141,10 @@ protected:
     };
     virtual RecoveryChoice askRecovery(const std::vector<model::RecoveryCopy> &copies);
     virtual QString askOpenPath();
+    // Import Picture: whether to make a picture's flat background colour transparent.
+    virtual bool askKeyOutBackground(const QString &name, QColor background);
+    // How far from the background colour a pixel may be and still be keyed out (each channel).
+    static constexpr int kKeyOutTolerance = 24;
     virtual QString askSavePath();
 
 private:
