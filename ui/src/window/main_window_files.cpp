@@ -300,6 +300,29 @@ void MainWindow::dropEvent(QDropEvent *event)
     }
 }
 
+namespace {
+
+// Runs `work` on a worker while a modal progress dialog (no cancel) keeps the window painting;
+// returns when it is done.
+void runWithProgress(QWidget *parent, const std::function<void()> &work, const QString &text,
+                     const QString &title)
+{
+    QThread *worker = QThread::create(work);
+    QProgressDialog progress(text, QString(), 0, 0, parent);
+    progress.setWindowTitle(title);
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(0);
+    progress.setCancelButton(nullptr);
+    QObject::connect(worker, &QThread::finished, &progress, &QDialog::accept);
+    worker->start();
+    if (!worker->isFinished())
+        progress.exec();
+    worker->wait();
+    delete worker;
+}
+
+} // namespace
+
 bool MainWindow::addPictureObjects(
     const std::function<Expected<std::vector<model::StrokeGroup>, QString>()> &work,
     const QString &reading, const QString &title, const std::function<QString(int)> &done)
@@ -308,18 +331,8 @@ bool MainWindow::addPictureObjects(
     // kept painting behind a modal progress dialog.
     auto result =
         std::make_shared<Expected<std::vector<model::StrokeGroup>, QString>>(unexpected(QString()));
-    QThread *worker = QThread::create([result, work] { *result = work(); });
-    QProgressDialog progress(reading, QString(), 0, 0, this);
-    progress.setWindowTitle(title);
-    progress.setWindowModality(Qt::WindowModal);
-    progress.setMinimumDuration(0);
-    progress.setCancelButton(nullptr);
-    connect(worker, &QThread::finished, &progress, &QDialog::accept);
-    worker->start();
-    if (!worker->isFinished())
-        progress.exec();
-    worker->wait();
-    delete worker;
+    runWithProgress(
+        this, [result, work] { *result = work(); }, reading, title);
     if (!*result) {
         reportError(tr("Cannot Import Picture"), result->error());
         return false;
@@ -355,21 +368,9 @@ bool MainWindow::importPicture(const QString &path)
     // white) may have that background keyed out before it is traced and meshed.
     auto layers = std::make_shared<Expected<std::vector<model::PictureLayer>, QString>>(
         unexpected(QString()));
-    {
-        QThread *worker =
-            QThread::create([layers, path] { *layers = model::readPictureLayers(path); });
-        QProgressDialog progress(tr("Reading \"%1\"...").arg(name), QString(), 0, 0, this);
-        progress.setWindowTitle(tr("Import Picture"));
-        progress.setWindowModality(Qt::WindowModal);
-        progress.setMinimumDuration(0);
-        progress.setCancelButton(nullptr);
-        connect(worker, &QThread::finished, &progress, &QDialog::accept);
-        worker->start();
-        if (!worker->isFinished())
-            progress.exec();
-        worker->wait();
-        delete worker;
-    }
+    runWithProgress(
+        this, [layers, path] { *layers = model::readPictureLayers(path); },
+        tr("Reading \"%1\"...").arg(name), tr("Import Picture"));
     if (!*layers) {
         reportError(tr("Cannot Import Picture"), layers->error());
         return false;
