@@ -295,28 +295,47 @@ QRect shownOn(const QRectF &bounds, const QTransform &view, QSize size)
 
 } // namespace
 
+namespace {
+
+// The group's picture as it shows through `view`, drawn alone into a transparent scratch image
+// over the part of a `size` device it covers (`box`, device pixels), tinted when asked. Null
+// when nothing of it is on the device.
+QImage scratchPicture(const StrokeGroup &group, const QTransform &view, QSize size,
+                      const std::optional<QColor> &tint, QRect &box)
+{
+    box = shownOn(shownPictureBounds(group), view, size);
+    if (box.isEmpty())
+        return {};
+    QImage scratch(box.size(), QImage::Format_ARGB32_Premultiplied);
+    if (scratch.isNull())
+        return {};
+    scratch.fill(Qt::transparent);
+    const ObjectPicture &picture = *group.picture;
+    drawTexturedMesh(scratch, view * QTransform::fromTranslate(-box.left(), -box.top()),
+                     picture.data->image, picture.mesh->uv, shownPictureVertices(group),
+                     picture.mesh->F);
+    if (tint)
+        tintPixels(scratch, *tint);
+    return scratch;
+}
+
+} // namespace
+
 void drawPicture(QImage &target, const QTransform &view, const StrokeGroup &group, qreal opacity,
                  const std::optional<QColor> &tint)
 {
     if (!group.picture || !pictureIsValid(*group.picture) || target.isNull() || !(opacity > 0))
         return;
-    const ObjectPicture &picture = *group.picture;
-    const Eigen::MatrixX2d V = shownPictureVertices(group);
-    if (!tint) {
-        drawTexturedMesh(target, view, picture.data->image, picture.mesh->uv, V, picture.mesh->F,
-                         std::min(opacity, 1.0));
+    if (!tint) { // straight into the target: no scratch copy
+        const ObjectPicture &picture = *group.picture;
+        drawTexturedMesh(target, view, picture.data->image, picture.mesh->uv,
+                         shownPictureVertices(group), picture.mesh->F, std::min(opacity, 1.0));
         return;
     }
-    const QRect box = shownOn(shownPictureBounds(group), view, target.size());
-    if (box.isEmpty())
-        return;
-    QImage scratch(box.size(), QImage::Format_ARGB32_Premultiplied);
+    QRect box;
+    const QImage scratch = scratchPicture(group, view, target.size(), tint, box);
     if (scratch.isNull())
         return;
-    scratch.fill(Qt::transparent);
-    drawTexturedMesh(scratch, view * QTransform::fromTranslate(-box.left(), -box.top()),
-                     picture.data->image, picture.mesh->uv, V, picture.mesh->F);
-    tintPixels(scratch, *tint);
     QPainter painter(&target);
     painter.setOpacity(std::min(opacity, 1.0));
     painter.drawImage(box.topLeft(), scratch);
@@ -334,19 +353,10 @@ void paintPicture(QPainter &painter, const StrokeGroup &group, const std::option
     const QTransform view = painter.combinedTransform() * QTransform::fromScale(dpr, dpr);
     const QSize deviceSize(int(std::ceil(painter.device()->width() * dpr)),
                            int(std::ceil(painter.device()->height() * dpr)));
-    const QRect box = shownOn(shownPictureBounds(group), view, deviceSize);
-    if (box.isEmpty())
-        return;
-    QImage scratch(box.size(), QImage::Format_ARGB32_Premultiplied);
+    QRect box;
+    QImage scratch = scratchPicture(group, view, deviceSize, tint, box);
     if (scratch.isNull())
         return;
-    scratch.fill(Qt::transparent);
-    const ObjectPicture &picture = *group.picture;
-    drawTexturedMesh(scratch, view * QTransform::fromTranslate(-box.left(), -box.top()),
-                     picture.data->image, picture.mesh->uv, shownPictureVertices(group),
-                     picture.mesh->F);
-    if (tint)
-        tintPixels(scratch, *tint);
     scratch.setDevicePixelRatio(dpr);
     painter.save();
     painter.resetTransform();
