@@ -28,7 +28,6 @@ namespace finbook::model::file_format {
 constexpr std::size_t kPictureFixedBytes = 4 + 4 + 8 + 4 + 4;
 constexpr std::size_t kPictureVertexBytes = 8 + 8;
 constexpr std::size_t kPictureTriangleBytes = 4 * 3;
-constexpr std::size_t kPictureChunkFixedBytes = 4 + 6 * 8 + 4;
 constexpr quint32 kMaxPictureMeshVertices = 1'000'000;
 
 // The pictures of a document in the order objects first show them: one entry per picture and
