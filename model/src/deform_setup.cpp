@@ -1,6 +1,7 @@
 // The part of every deformer that is the same for all kinds: the content key, meshing, the
 // job → setup dispatch, turning solved points into strokes, and mapping clicks back to rest.
 #include "deformation_text.h"
+#include "picture/picture_cut.h"
 
 #include <finbook/model/cage/cage_setup.h>
 #include <finbook/model/deform_setup.h>
@@ -106,6 +107,16 @@ Expected<geometry::ObjectMesh, geometry::GeometryError> pictureObjectMesh(const 
     options.repair.cornerRadius = 0.0;
     options.repair.simplifyTolerance = 0.1;
     return geometry::buildObjectMesh(mesh->region, options);
+}
+
+// Whether `meshed` is the picture's texture mesh itself (the usual density), so that a cut of
+// it is a cut of the picture.
+bool meshIsPictures(const MeshedObject &meshed, const ObjectPicture &picture)
+{
+    const geometry::ObjectMesh &mesh = meshed.mesh;
+    return pictureIsValid(picture) && mesh.V.rows() == picture.mesh->uv.rows() &&
+           mesh.F.rows() == picture.mesh->F.rows() &&
+           (mesh.F.array() == picture.mesh->F.array()).all();
 }
 
 } // namespace
@@ -240,6 +251,11 @@ Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &g
         auto layered = std::make_shared<DeformedStrokes>(*pose.strokes);
         addCutOutPieces(*setup.skeleton, *setup.meshed, pose.vertices, group.rig.skeleton,
                         *layered);
+        if (group.picture && meshIsPictures(*setup.meshed, *group.picture))
+            if (auto posed = posedSkinningSkeleton(setup.skeleton->skeleton, group.rig.skeleton))
+                layered->pictureLayers =
+                    cutOutPictureLayers(*group.picture, *setup.skeleton->cut, pose.vertices,
+                                        setup.skeleton->skeleton, *posed);
         pose.strokes = std::move(layered);
     }
     return pose;

@@ -13,6 +13,8 @@
 #include <finbook/model/picture/picture_object.h>
 #include <finbook/model/render.h>
 #include <finbook/model/rig/rig_commands.h>
+#include <finbook/model/skeleton/cut_out_layers.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
 
 #include <QPainter>
@@ -21,6 +23,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <numbers>
 
 using namespace finbook;
 using namespace finbook::model;
@@ -37,6 +40,7 @@ private slots:
     void damagedPicturesAreRefusedOrLeftOut();
     void exportsShowThePictureAsPosed_data();
     void exportsShowThePictureAsPosed();
+    void cutOutTurnsPiecesRigidlyWithSockets();
 };
 
 namespace {
@@ -451,6 +455,158 @@ void TestPictureObject::exportsShowThePictureAsPosed()
             opaque += qAlpha(inside.pixel(x, y)) == 255;
     QVERIFY(opaque > 5000);
     QVERIFY(largestDifference(exported, shown, 0, &inside) <= 3);
+}
+
+namespace {
+
+// A painted figure, opaque inside its outline: a body with an arm reaching out to the right,
+// striped across so that a piece drawn turned or stretched shows.
+QImage paintedFigure()
+{
+    QImage image(260, 180, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    QPainterPath figure;
+    figure.addRoundedRect(QRectF(10, 10, 120, 160), 40, 40);
+    figure.addRoundedRect(QRectF(100, 66, 150, 28), 14, 14);
+    figure.setFillRule(Qt::WindingFill);
+    p.setClipPath(figure.simplified());
+    for (int x = 0; x < 260; x += 12) {
+        p.fillRect(QRectF(x, 0, 6, 180), QColor(200, 60, 40));
+        p.fillRect(QRectF(x + 6, 0, 6, 180), QColor(40, 90, 200));
+    }
+    return image;
+}
+
+// How much the posed triangle abc is longer along an edge than it is at rest (1 unchanged).
+double stretch(const Eigen::MatrixX2d &rest, const Eigen::MatrixX2d &posed,
+               const Eigen::Vector3i &f)
+{
+    double worst = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const int i = f(k), j = f((k + 1) % 3);
+        worst = std::max(worst, (posed.row(i) - posed.row(j)).norm() /
+                                    std::max(1e-9, (rest.row(i) - rest.row(j)).norm()));
+    }
+    return worst;
+}
+
+} // namespace
+
+void TestPictureObject::cutOutTurnsPiecesRigidlyWithSockets()
+{
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id frame = doc.frameAt(0).id;
+    auto made = makePictureObject(PictureLayer{QStringLiteral("figure"), paintedFigure(), {}},
+                                  QPointF(20, 20));
+    QVERIFY(made.hasValue());
+    std::vector<StrokeGroup> objects{*made};
+    auto *import = new ImportPictureCommand(&doc, frame, -1, std::move(objects));
+    doc.undoStack()->push(import);
+    const Id object = import->objectIds().front();
+    auto built = buildSkeletonRig(*doc.group(object), {}, std::nullopt, doc.settings().closeGap);
+    QVERIFY2(built.hasValue(), qPrintable(built ? QString() : built.error()));
+    Rig rig;
+    rig.skeleton = *built;
+    rig.skeleton.mode = SkinningMode::CutOut;
+    rig.skeleton.angles.assign(std::size_t(built->jointCount()), 0.0);
+    // The arm: the joint whose bone runs farthest to the right, turned down by 60° at its base
+    // (the joint it hangs from, inside the body).
+    const std::vector<QPointF> joints = built->posedJoints();
+    int tip = 0;
+    for (int j = 0; j < built->jointCount(); ++j)
+        if (joints[std::size_t(j)].x() > joints[std::size_t(tip)].x())
+            tip = j;
+    int base = tip;
+    while (built->parent[std::size_t(base)] >= 0 &&
+           joints[std::size_t(built->parent[std::size_t(base)])].x() > 20 + 135)
+        base = built->parent[std::size_t(base)];
+    QVERIFY(built->parent[std::size_t(base)] >= 0);
+    rig.skeleton.angles[std::size_t(base)] = 60.0 * std::numbers::pi / 180.0;
+    doc.setRig(object, rig);
+    DeformJob job;
+    job.groupId = object;
+    job.key = MeshKey::of(*doc.group(object), -1.0);
+    job.rig = rig.atRest();
+    const auto setup = buildDeformSetup(job);
+    QVERIFY2(setup.hasValue(), qPrintable(setup ? QString() : setup.error()));
+    const auto solved = solvePose(**setup, *doc.group(object));
+    QVERIFY(solved.hasValue());
+    doc.setDeformed(object, solved->strokes);
+    const StrokeGroup &g = *doc.group(object);
+    const DeformedStrokes &pose = *g.deformed;
+    QVERIFY(!pose.sockets.empty());
+    QVERIFY(!pose.pictureLayers.isEmpty());
+    // Every triangle of the picture is drawn once, in pieces; each socket as a fan.
+    const ShownPictureMesh shown = shownPictureMesh(g);
+    const Eigen::Index faces = g.picture->mesh->F.rows();
+    int sockets = 0;
+    for (const QPainterPath &socket : pose.sockets)
+        sockets += socket.isEmpty() ? 0 : 1;
+    QVERIFY(sockets >= 1);
+    QCOMPARE(shown.F.rows(), faces + sockets * 32);
+    // The pieces turn rigidly: no triangle of the picture stretches across a cut. (Drawn
+    // through the uncut mesh, those at the shoulder stretch far over the turn.)
+    const Eigen::MatrixX2d restShown = [&] {
+        Eigen::MatrixX2d rest(shown.uv.rows(), 2);
+        for (Eigen::Index i = 0; i < rest.rows(); ++i) {
+            const QPointF p = g.picture->place.map(QPointF(shown.uv(i, 0), shown.uv(i, 1)));
+            rest.row(i) << p.x(), p.y();
+        }
+        return rest;
+    }();
+    double worstCut = 0.0, worstUncut = 0.0;
+    for (Eigen::Index f = shown.F.rows() - faces; f < shown.F.rows(); ++f)
+        worstCut = std::max(worstCut, stretch(restShown, shown.V, shown.F.row(f).transpose()));
+    const Eigen::MatrixX2d uncut = shownPictureVertices(g), rest = g.picture->restVertices();
+    for (Eigen::Index f = 0; f < faces; ++f)
+        worstUncut =
+            std::max(worstUncut, stretch(rest, uncut, g.picture->mesh->F.row(f).transpose()));
+    QVERIFY2(worstCut < 1.02, qPrintable(QString::number(worstCut)));
+    QVERIFY2(worstUncut > 1.3, qPrintable(QString::number(worstUncut)));
+    // The sockets fill the joint from the picture's own pixels: the whole posed disk (less a
+    // pixel at its rim) is opaque, on the outer side of the bend too, where neither piece lies.
+    Frame shownFrame;
+    shownFrame.groups.push_back(g);
+    const QImage posed = render(shownFrame, QSize(360, 300));
+    int inDisk = 0, holes = 0;
+    for (const QPainterPath &socket : pose.sockets) {
+        if (socket.isEmpty())
+            continue;
+        const QRectF box = socket.boundingRect();
+        const QPointF centre = box.center();
+        const double radius = box.width() / 2.0 - 1.5;
+        for (int y = int(box.top()); y <= int(box.bottom()); ++y)
+            for (int x = int(box.left()); x <= int(box.right()); ++x) {
+                if (std::hypot(x + 0.5 - centre.x(), y + 0.5 - centre.y()) > radius)
+                    continue;
+                ++inDisk;
+                holes += qAlpha(posed.pixel(x, y)) != 255;
+            }
+    }
+    QVERIFY(inDisk > 100);
+    QCOMPARE(holes, 0);
+    // Apply Pose keeps what was shown, resampled once; undo gives the picture back.
+    const auto before = g.picture;
+    doc.undoStack()->push(makeApplyPoseCommand(&doc, object));
+    Frame bakedFrame;
+    bakedFrame.groups.push_back(*doc.group(object));
+    const QImage inside = interior(posed);
+    QVERIFY(largestDifference(render(bakedFrame, QSize(360, 300)), posed, 0, &inside) <= 3);
+    doc.undoStack()->undo();
+    QVERIFY(doc.group(object)->picture == before);
+    // A file keeps the pose but not the layers; reading it brings them back, drawn the same.
+    auto loaded = readFinbook(serializeFinbook(doc));
+    QVERIFY2(loaded.hasValue(), qPrintable(loaded ? QString() : loaded.error().message));
+    const StrokeGroup &back = loaded->frames.front().groups.back();
+    QVERIFY(back.picture && back.isDeformed() && back.deformed->pictureLayers.isEmpty());
+    QCOMPARE(restoreCutOutLayers(loaded->frames, doc.settings().closeGap), 1);
+    QVERIFY(!back.deformed->pictureLayers.isEmpty());
+    Frame backFrame;
+    backFrame.groups.push_back(back);
+    QCOMPARE(largestDifference(render(backFrame, QSize(360, 300)), posed), 0);
 }
 
 QTEST_MAIN(TestPictureObject)

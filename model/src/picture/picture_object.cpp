@@ -202,9 +202,40 @@ Eigen::MatrixX2d shownPictureVertices(const StrokeGroup &group)
     return group.picture->restVertices();
 }
 
+ShownPictureMesh shownPictureMesh(const StrokeGroup &group)
+{
+    ShownPictureMesh shown;
+    if (!group.picture || !pictureIsValid(*group.picture))
+        return shown;
+    const PictureLayers *layers = group.isDeformed() ? &group.deformed->pictureLayers : nullptr;
+    if (!layers || layers->isEmpty() || layers->uv.size() != layers->vertices.size()) {
+        shown.uv = group.picture->mesh->uv;
+        shown.V = shownPictureVertices(group);
+        shown.F = group.picture->mesh->F;
+        return shown;
+    }
+    const auto n = Eigen::Index(layers->vertices.size());
+    shown.uv.resize(n, 2);
+    shown.V.resize(n, 2);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        shown.uv.row(i) << layers->uv[std::size_t(i)].x(), layers->uv[std::size_t(i)].y();
+        shown.V.row(i) << layers->vertices[std::size_t(i)].x(),
+            layers->vertices[std::size_t(i)].y();
+    }
+    shown.F.resize(Eigen::Index(layers->faces.size()), 3);
+    for (Eigen::Index f = 0; f < shown.F.rows(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const int v = layers->faces[std::size_t(f)][std::size_t(k)];
+            if (v < 0 || v >= n)
+                return {}; // not drawn rather than drawn wrong
+            shown.F(f, k) = v;
+        }
+    return shown;
+}
+
 QRectF shownPictureBounds(const StrokeGroup &group)
 {
-    const Eigen::MatrixX2d V = shownPictureVertices(group);
+    const Eigen::MatrixX2d V = shownPictureMesh(group).V;
     if (V.rows() == 0 || !V.allFinite())
         return {};
     const Eigen::RowVector2d lo = V.colwise().minCoeff(), hi = V.colwise().maxCoeff();
@@ -244,8 +275,9 @@ bool pictureShowsAt(const StrokeGroup &group, QPointF pos)
     if (!group.picture || !pictureIsValid(*group.picture) ||
         !shownPictureBounds(group).contains(pos))
         return false;
-    const Eigen::MatrixX2d V = shownPictureVertices(group);
-    const Eigen::MatrixX3i &F = group.picture->mesh->F;
+    const ShownPictureMesh mesh = shownPictureMesh(group);
+    const Eigen::MatrixX2d &V = mesh.V;
+    const Eigen::MatrixX3i &F = mesh.F;
     const auto cross = [](double ax, double ay, double bx, double by) { return ax * by - ay * bx; };
     for (Eigen::Index f = 0; f < F.rows(); ++f) {
         const double ax = V(F(f, 0), 0), ay = V(F(f, 0), 1), bx = V(F(f, 1), 0), by = V(F(f, 1), 1),
@@ -310,10 +342,9 @@ QImage scratchPicture(const StrokeGroup &group, const QTransform &view, QSize si
     if (scratch.isNull())
         return {};
     scratch.fill(Qt::transparent);
-    const ObjectPicture &picture = *group.picture;
+    const ShownPictureMesh mesh = shownPictureMesh(group);
     drawTexturedMesh(scratch, view * QTransform::fromTranslate(-box.left(), -box.top()),
-                     picture.data->image, picture.mesh->uv, shownPictureVertices(group),
-                     picture.mesh->F);
+                     group.picture->data->image, mesh.uv, mesh.V, mesh.F);
     if (tint)
         tintPixels(scratch, *tint);
     return scratch;
@@ -327,9 +358,9 @@ void drawPicture(QImage &target, const QTransform &view, const StrokeGroup &grou
     if (!group.picture || !pictureIsValid(*group.picture) || target.isNull() || !(opacity > 0))
         return;
     if (!tint) { // straight into the target: no scratch copy
-        const ObjectPicture &picture = *group.picture;
-        drawTexturedMesh(target, view, picture.data->image, picture.mesh->uv,
-                         shownPictureVertices(group), picture.mesh->F, std::min(opacity, 1.0));
+        const ShownPictureMesh mesh = shownPictureMesh(group);
+        drawTexturedMesh(target, view, group.picture->data->image, mesh.uv, mesh.V, mesh.F,
+                         std::min(opacity, 1.0));
         return;
     }
     QRect box;

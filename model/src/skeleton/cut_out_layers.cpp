@@ -10,13 +10,19 @@ bool lacksCutOutLayers(const StrokeGroup &group)
     const Rig &rig = group.rig;
     return rig.kind() == RigKind::Skeleton && rig.skeleton.mode == SkinningMode::CutOut &&
            rig.skeleton.isPosed() && group.deformed && group.deformed->pieces.empty() &&
-           !group.strokes.empty();
+           (!group.strokes.empty() || group.picture);
 }
 
 bool restoresLayers(const DeformedStrokes &a, const DeformedStrokes &b)
 {
-    if (a.pieces.empty() || a.strokes.size() != b.strokes.size())
+    if (a.pieces.empty() || a.strokes.size() != b.strokes.size() ||
+        a.pictureVertices.size() != b.pictureVertices.size())
         return false;
+    for (std::size_t i = 0; i < a.pictureVertices.size(); ++i) {
+        const QPointF d = a.pictureVertices[i] - b.pictureVertices[i];
+        if (!(std::hypot(d.x(), d.y()) <= kCutOutLayersTolerance))
+            return false;
+    }
     for (std::size_t s = 0; s < a.strokes.size(); ++s) {
         if (a.strokes[s].size() != b.strokes[s].size())
             return false;

@@ -31,8 +31,10 @@ model::Frame withoutStrokes(const model::Frame &frame, const std::vector<model::
             g.picture = nullptr;
         const bool deformed = g.isDeformed() && g.deformed->strokes.size() == g.strokes.size();
         model::DeformedStrokes pose;
-        if (deformed)
+        if (deformed) {
             pose.pictureVertices = g.deformed->pictureVertices;
+            pose.pictureLayers = g.deformed->pictureLayers;
+        }
         std::vector<model::Stroke> kept;
         for (std::size_t i = 0; i < g.strokes.size(); ++i) {
             if (std::find(hidden.begin(), hidden.end(), g.strokes[i].id) != hidden.end())

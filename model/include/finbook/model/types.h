@@ -14,6 +14,7 @@
 #include <QString>
 #include <QTransform>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -102,6 +103,17 @@ struct Rig {
 };
 
 // Points of one deformed object, stroke by stroke (same order and sizes as its rest strokes).
+// A picture object's texture mesh as a cut-out pose draws it (picture/picture_cut.h): cut at
+// the joints, each piece's triangles with vertices of their own (copied where pieces part), the
+// sockets first, then the pieces in drawing order.
+struct PictureLayers {
+    std::vector<QPointF> uv;               // texture pixels, per vertex
+    std::vector<QPointF> vertices;         // posed canvas pixels, per vertex
+    std::vector<std::array<int, 3>> faces; // drawn in this order
+    bool isEmpty() const { return faces.empty(); }
+    friend bool operator==(const PictureLayers &, const PictureLayers &) = default;
+};
+
 struct DeformedStrokes {
     std::vector<std::vector<StrokePoint>> strokes;
     // A cut-out skeleton's pose (SkinningMode::CutOut) lies in pieces, each drawn over the ones
@@ -123,6 +135,10 @@ struct DeformedStrokes {
     // A picture object's texture mesh as posed (picture/picture_object.h: one position per
     // vertex of its PictureMesh, canvas pixels). Empty for an object without a picture.
     std::vector<QPointF> pictureVertices;
+    // A cut-out pose of a picture object (in memory, as `pieces`): what is drawn instead of the
+    // texture mesh through pictureVertices, which hold each vertex in its first piece. Empty for
+    // every other pose.
+    PictureLayers pictureLayers;
     friend bool operator==(const DeformedStrokes &, const DeformedStrokes &) = default;
 };
 using DeformedStrokesPtr = std::shared_ptr<const DeformedStrokes>;

@@ -107,6 +107,15 @@ bool pictureIsValid(const ObjectPicture &picture);
 // the pose holds one per vertex, its rest vertices otherwise. Empty without a picture.
 Eigen::MatrixX2d shownPictureVertices(const StrokeGroup &group);
 
+// The textured mesh the object draws now: the texture mesh through shownPictureVertices, or a
+// cut-out pose's layers (DeformedStrokes::pictureLayers: pieces and sockets). Triangles are drawn
+// in the order of F. Empty without a valid picture.
+struct ShownPictureMesh {
+    Eigen::MatrixX2d uv, V; // texture px and canvas px, per vertex
+    Eigen::MatrixX3i F;
+};
+ShownPictureMesh shownPictureMesh(const StrokeGroup &group);
+
 // The bounding box of the picture as the object shows it now (canvas px); empty without one.
 QRectF shownPictureBounds(const StrokeGroup &group);
 

@@ -14,8 +14,8 @@ namespace finbook::model {
 bool lacksCutOutLayers(const StrokeGroup &group);
 
 // Whether `solved` (a fresh solve of a group's pose) brings the layers for `stored` (the
-// group's pose as read): it has layers and its strokes are the stored ones to within
-// kCutOutLayersTolerance px.
+// group's pose as read): it has layers and its strokes and picture vertices are the stored ones
+// to within kCutOutLayersTolerance px.
 constexpr double kCutOutLayersTolerance = 0.01;
 bool restoresLayers(const DeformedStrokes &solved, const DeformedStrokes &stored);
 
