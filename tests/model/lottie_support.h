@@ -6,11 +6,13 @@
 #include "export_support.h"
 
 #include <finbook/model/export/export_plan.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/scene/shot.h>
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QPainter>
 
 #include <cmath>
 #include <memory>
@@ -288,6 +290,70 @@ inline model::ExportSource layeredScene()
     k1.zoom = 1.4;
     k1.rotation = 12;
     source.camera.keys = {k0, k1};
+    return source;
+}
+
+// A painted picture: a soft-edged disc with a gradient and stripes.
+inline QImage paintedDisc()
+{
+    QImage image(120, 100, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    QLinearGradient gradient(0, 0, 120, 100);
+    gradient.setColorAt(0, QColor(220, 40, 30));
+    gradient.setColorAt(1, QColor(30, 90, 220));
+    p.setBrush(gradient);
+    p.setPen(Qt::NoPen);
+    p.drawEllipse(QRectF(4, 4, 112, 92));
+    p.setPen(QPen(QColor(250, 240, 60), 5));
+    for (int x = 10; x < 120; x += 20)
+        p.drawLine(QPointF(x, 10), QPointF(x + 10, 90));
+    return image;
+}
+
+// The picture object at `at`, bent by `amount` px (its vertices pushed along slow waves) as a
+// pose, or at rest for 0.
+inline model::StrokeGroup bentPicture(model::Id id, QPointF at, double amount)
+{
+    auto made = model::makePictureObject(
+        model::PictureLayer{QStringLiteral("painted"), paintedDisc(), {}}, at);
+    if (!made)
+        qFatal("%s", qPrintable(made.error()));
+    model::StrokeGroup g = *made;
+    g.id = id;
+    if (amount == 0.0)
+        return g;
+    g.rig.pins = {{id + 1, at, at}};
+    auto pose = std::make_shared<model::DeformedStrokes>();
+    const Eigen::MatrixX2d rest = g.picture->restVertices();
+    for (Eigen::Index i = 0; i < rest.rows(); ++i)
+        pose->pictureVertices.emplace_back(rest(i, 0) + amount * std::sin(rest(i, 1) * 0.05),
+                                           rest(i, 1) + amount * std::cos(rest(i, 0) * 0.04));
+    g.deformed = pose;
+    return g;
+}
+
+// Three drawings: a picture that keeps still, one posed anew in each drawing, and a drawn line
+// across both over them (the pictures lie under what is drawn after them).
+inline model::ExportSource picturesScene()
+{
+    model::ExportSource source;
+    source.settings = smallPage();
+    for (int i = 0; i < 3; ++i) {
+        model::Frame f;
+        f.id = 90 + i;
+        f.groups.push_back(bentPicture(1, QPointF(20, 30), 0.0));
+        f.groups.push_back(bentPicture(10, QPointF(200, 120), 4.0 * (i + 1)));
+        model::StrokeGroup line;
+        line.id = 20;
+        model::Stroke stroke;
+        stroke.id = 21;
+        stroke.data = strokeOf({QPointF(30, 80), QPointF(370, 180)}, {}, 8.0f, 0xff000000);
+        line.strokes.push_back(stroke);
+        f.groups.push_back(line);
+        source.frames.push_back(f);
+    }
     return source;
 }
 

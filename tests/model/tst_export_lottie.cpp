@@ -152,6 +152,7 @@ private slots:
     void layersAndCameraMatch();
     void dotLottieHoldsTheSameAnimation();
     void cancelledLeavesNothing();
+    void picturesArePosedImages();
 };
 
 void TestExportLottie::exampleMatchesEveryTick()
@@ -433,6 +434,43 @@ void TestExportLottie::cancelledLeavesNothing()
     QVERIFY(!result);
     QCOMPARE(result.error().code, model::ExportErrorCode::Cancelled);
     QCOMPARE(filesIn(dir.path()), QStringList());
+}
+
+void TestExportLottie::picturesArePosedImages()
+{
+    const model::ExportSource source = picturesScene();
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("pictures.json"));
+    const Played played = playAndCompare(source, model::ExportOptions(), path);
+    qInfo("pictures: worst tick %lld agrees %.2f %% (drawing alone %.2f %%), ink ratio %.3f",
+          played.worstTick, 100 * played.worst, 100 * played.worstInk, played.inkRatio);
+    QVERIFY2(played.worst >= 0.98, qPrintable(QString::number(played.worst)));
+    QVERIFY2(played.worstInk >= 0.95, qPrintable(QString::number(played.worstInk)));
+    // Each picture once as it shows: the still one once, the posed one once per drawing.
+    const QJsonObject json = readJson(path);
+    int images = 0;
+    for (const QJsonValue &asset : json[QStringLiteral("assets")].toArray()) {
+        const QJsonObject a = asset.toObject();
+        if (!a.contains(QStringLiteral("p")))
+            continue;
+        ++images;
+        QCOMPARE(a[QStringLiteral("e")].toInt(), 1);
+        QVERIFY(
+            a[QStringLiteral("p")].toString().startsWith(QStringLiteral("data:image/png;base64,")));
+    }
+    QCOMPARE(images, 4);
+    const QJsonArray inner = innerLayers(path);
+    QCOMPARE(countLayers(inner, 2), 4); // the still picture's one layer, the posed one's three
+    // The line's layer lies over the pictures' (Lottie draws its first layers on top).
+    int line = -1, firstImage = -1;
+    for (int i = 0; i < inner.size(); ++i) {
+        const int type = inner[i].toObject()[QStringLiteral("ty")].toInt();
+        if (type == 4 && line < 0)
+            line = i;
+        if (type == 2 && firstImage < 0)
+            firstImage = i;
+    }
+    QVERIFY(line >= 0 && line < firstImage);
 }
 
 QTEST_GUILESS_MAIN(TestExportLottie)

@@ -141,6 +141,7 @@ void TestExportLottieWeb::playsInLottieWeb_data()
     QTest::newRow("two layers, moving camera") << 3;
     QTest::newRow("shaded fill") << 4;
     QTest::newRow("a cycle played twice") << 5;
+    QTest::newRow("pictures, one posed") << 6;
 }
 
 void TestExportLottieWeb::playsInLottieWeb()
@@ -163,6 +164,8 @@ void TestExportLottieWeb::playsInLottieWeb()
             source = layeredScene();
         if (which == 5)
             source = cycle(2);
+        if (which == 6)
+            source = picturesScene();
         o.transparent = which == 1;
     }
     o.format = model::ExportFormat::Lottie;
@@ -241,9 +244,10 @@ void TestExportLottieWeb::validatesAgainstTheSchema()
     save(fills, QStringLiteral("fills.json"), false);
     save(layeredScene(), QStringLiteral("scene.json"), false);
     save(cycle(2), QStringLiteral("cycle.json"), false);
-    QCOMPARE(files.size(), 5);
+    save(picturesScene(), QStringLiteral("pictures.json"), false);
+    QCOMPARE(files.size(), 6);
     const QJsonArray results = validate(files, dir.filePath(QStringLiteral("validate.js")));
-    QCOMPARE(results.size(), 5);
+    QCOMPARE(results.size(), 6);
     for (const QJsonValue &v : results) {
         const QJsonObject r = v.toObject();
         const QJsonArray errors = r[QStringLiteral("errors")].toArray();

@@ -16,6 +16,11 @@
 // share one shape layer whose paths are keyed (hold keys: each drawing shows until the next),
 // and a path that does not move is written once.
 //
+// A picture object's picture is an image layer under its shape layer (Lottie has no textured
+// meshes): the picture as posed in each drawing, drawn at the output's scale into a PNG asset
+// embedded in the file, each such picture once however often it shows (an unposed picture held
+// through a scene is one asset).
+//
 // Numbers are canvas pixels rounded to 1/100, colours to 1/10000 (players that
 // truncate still get the same 8-bit channel). No reference picture and no
 // sound: Lottie has neither (the result's note says so when the document has them).
@@ -25,10 +30,12 @@
 #include "lottie_shapes.h"
 
 #include <finbook/model/fill/fill_render.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/render.h>
 #include <finbook/model/scene/shot.h>
 
 #include <QBuffer>
+#include <QCryptographicHash>
 #include <QFileInfo>
 #include <QHash>
 #include <QJsonArray>
@@ -153,16 +160,78 @@ struct Item {
     std::vector<BezierPath> paths;
 };
 
-// What an object shows in one drawing, in painting order.
+// A picture as an image asset: its id and where its top-left corner lies (canvas px).
+struct PictureRef {
+    QByteArray asset;
+    QPointF at;
+};
+
+// The pictures of an export as PNG assets drawn at `scale` output px per canvas px, each the
+// same PNG once.
+class PictureAssets {
+public:
+    explicit PictureAssets(double scale)
+        : m_scale(scale)
+    {}
+    double scale() const { return m_scale; }
+    // The group's picture as it shows; nullopt when none of it shows or it cannot be drawn.
+    std::optional<PictureRef> add(const StrokeGroup &group)
+    {
+        if (!group.picture || !pictureIsValid(*group.picture))
+            return std::nullopt;
+        const QRectF shown = shownPictureBounds(group);
+        if (!shown.isValid())
+            return std::nullopt;
+        const double left = std::floor(shown.left() * m_scale),
+                     top = std::floor(shown.top() * m_scale);
+        const double width = std::ceil(shown.right() * m_scale) - left,
+                     height = std::ceil(shown.bottom() * m_scale) - top;
+        if (!(width >= 1 && height >= 1 && width <= kMaxPictureSide && height <= kMaxPictureSide))
+            return std::nullopt;
+        QImage image(int(width), int(height), QImage::Format_ARGB32_Premultiplied);
+        if (image.isNull())
+            return std::nullopt;
+        image.fill(Qt::transparent);
+        drawPicture(
+            image, QTransform::fromScale(m_scale, m_scale) * QTransform::fromTranslate(-left, -top),
+            group);
+        QByteArray png;
+        QBuffer buffer(&png);
+        if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG"))
+            return std::nullopt;
+        const QByteArray hash = QCryptographicHash::hash(png, QCryptographicHash::Sha256);
+        auto id = m_ids.find(hash);
+        if (id == m_ids.end()) {
+            id = m_ids.insert(hash, "picture_" + QByteArray::number(m_ids.size() + 1));
+            if (!m_json.isEmpty())
+                m_json += ',';
+            m_json += "{\"id\":\"" + *id + "\",\"w\":" + QByteArray::number(image.width()) +
+                      ",\"h\":" + QByteArray::number(image.height()) +
+                      ",\"u\":\"\",\"p\":\"data:image/png;base64," + png.toBase64() + "\",\"e\":1}";
+        }
+        return PictureRef{*id, QPointF(left / m_scale, top / m_scale)};
+    }
+    // The assets' entries, comma-separated.
+    const QByteArray &json() const { return m_json; }
+
+private:
+    double m_scale;
+    QHash<QByteArray, QByteArray> m_ids; // the PNG's SHA-256, its asset's id
+    QByteArray m_json;
+};
+
+// What an object shows in one drawing, in painting order: its picture, if any, under its items.
 struct Look {
     Id id = kNoId;
     QString name;
+    std::optional<PictureRef> picture;
     std::vector<Item> items;
+    bool isEmpty() const { return items.empty() && !picture; }
 };
 
-Look lookOf(const StrokeGroup &group, const DocumentSettings &settings)
+Look lookOf(const StrokeGroup &group, const DocumentSettings &settings, PictureAssets &pictures)
 {
-    Look look{group.id, group.name, {}};
+    Look look{group.id, group.name, pictures.add(group), {}};
     // A posed stroke's rest points, by the posed points paintLayers paints.
     std::unordered_map<const std::vector<StrokePoint> *, const std::vector<StrokePoint> *> rest;
     for (std::size_t i = 0; group.isDeformed() && i < group.strokes.size(); ++i)
@@ -197,7 +266,7 @@ Look lookOf(const StrokeGroup &group, const DocumentSettings &settings)
 // Whether two looks can share a shape layer: the same items, colours and vertex layout.
 bool sameLayout(const Look &a, const Look &b)
 {
-    if (a.items.size() != b.items.size())
+    if (a.items.size() != b.items.size() || a.picture.has_value() != b.picture.has_value())
         return false;
     for (std::size_t i = 0; i < a.items.size(); ++i) {
         const Item &x = a.items[i], &y = b.items[i];
@@ -215,8 +284,13 @@ struct Run {
     qint64 start = 0, end = 0;
     Look layout;                                                               // the first look
     std::vector<std::vector<std::vector<std::pair<qint64, QByteArray>>>> keys; // item, path
+    std::vector<std::pair<qint64, PictureRef>> pictures; // from which tick each shows
     void add(const Look &look, qint64 tick)
     {
+        if (look.picture &&
+            (pictures.empty() || pictures.back().second.asset != look.picture->asset ||
+             pictures.back().second.at != look.picture->at))
+            pictures.emplace_back(tick, *look.picture);
         keys.resize(look.items.size());
         for (std::size_t i = 0; i < look.items.size(); ++i) {
             keys[i].resize(look.items[i].paths.size());
@@ -230,11 +304,18 @@ struct Run {
     }
 };
 
+// An image layer under a shape layer: a picture from ip to op.
+struct ImageShowing {
+    qint64 ip = 0, op = 0;
+    PictureRef picture;
+};
+
 struct ShapeLayer {
     QByteArray name;
     qint64 ip = 0, op = 0;
-    QByteArray shapes;
-    int segment = 0, slot = 0; // the stretch of drawings and the place in it, back to front
+    QByteArray shapes;                // empty: an object with only a picture
+    std::vector<ImageShowing> images; // under the shapes, in time order
+    int segment = 0, slot = 0;        // the stretch of drawings and the place in it, back to front
 };
 
 ShapeLayer shapeLayerOf(const Run &run, int segment, int slot)
@@ -247,6 +328,12 @@ ShapeLayer shapeLayerOf(const Run &run, int segment, int slot)
     layer.op = run.end;
     layer.segment = segment;
     layer.slot = slot;
+    for (std::size_t k = 0; k < run.pictures.size(); ++k)
+        layer.images.push_back({run.pictures[k].first,
+                                k + 1 < run.pictures.size() ? run.pictures[k + 1].first : run.end,
+                                run.pictures[k].second});
+    if (run.layout.items.empty())
+        return layer;
     // Lottie draws a layer's first shape on top: the items go in reverse painting order.
     QByteArray shapes = "[";
     for (std::size_t i = run.layout.items.size(); i-- > 0;) {
@@ -364,6 +451,11 @@ QByteArray lottieJson(const ExportContext &context)
         track(id).name = name;
     }
 
+    // The page: canvas pixels to output pixels, centred (renderFrame's fit).
+    const double fit =
+        std::min(plan.size.width() / canvas.width(), plan.size.height() / canvas.height());
+    PictureAssets pictures(fit);
+
     qint64 tick = 0;
     for (std::size_t e = 0; e < plan.frames.size(); ++e) {
         if (context.cancelled(qint64(e), qint64(plan.frames.size())))
@@ -398,8 +490,8 @@ QByteArray lottieJson(const ExportContext &context)
                 const StrokeGroup &group = frame.groups[std::size_t(g)];
                 if (!group.visible)
                     continue;
-                Look look = lookOf(group, settings);
-                if (!look.items.empty())
+                Look look = lookOf(group, settings, pictures);
+                if (!look.isEmpty())
                     looks.push_back(std::move(look));
             }
             begin = stop;
@@ -419,9 +511,6 @@ QByteArray lottieJson(const ExportContext &context)
     const qint64 ticks = plan.ticks;
     QByteArray assets, layers;
     int ind = 0;
-    // The page: canvas pixels to output pixels, centred (renderFrame's fit).
-    const double fit =
-        std::min(plan.size.width() / canvas.width(), plan.size.height() / canvas.height());
     const int page = ++ind;
     Transform pageTransform;
     pageTransform.position = pair((plan.size.width() - canvas.width() * fit) / 2,
@@ -499,9 +588,27 @@ QByteArray lottieJson(const ExportContext &context)
         inner += layerJson(1, 3, "\"Page\"", 0, offset, 0, ticks, {});
         int innerInd = 1;
         for (const ShapeLayer &s : t->done) {
+            // The object's picture under its shapes: an image layer per pose, at the scale it
+            // was drawn.
+            const auto images = [&] {
+                QByteArray out;
+                for (const ImageShowing &image : s.images) {
+                    Transform placed;
+                    placed.position = pair(image.picture.at.x(), image.picture.at.y());
+                    placed.scale = pair(100 / fit, 100 / fit, 4);
+                    out += ',' + layerJson(++innerInd, 2, s.name, 1, placed, image.ip, image.op,
+                                           ",\"refId\":\"" + image.picture.asset + '"');
+                }
+                return out;
+            };
+            if (s.shapes.isEmpty()) {
+                inner += images();
+                continue;
+            }
             if (showings.value(s.shapes) < 2) {
                 inner += ',' + layerJson(++innerInd, 4, s.name, 1, Transform(), s.ip, s.op,
                                          ",\"shapes\":" + s.shapes);
+                inner += images();
                 continue;
             }
             auto asset = shared.find(s.shapes);
@@ -518,6 +625,7 @@ QByteArray lottieJson(const ExportContext &context)
             }
             inner += ',' + layerJson(++innerInd, 0, s.name, 1, placedShared, s.ip, s.op,
                                      ",\"refId\":\"" + *asset + '"' + compKeys);
+            inner += images();
         }
         if (!assets.isEmpty())
             assets += ',';
@@ -537,6 +645,8 @@ QByteArray lottieJson(const ExportContext &context)
             string(t->name.isEmpty() ? QStringLiteral("Layer %1").arg(layerNumber) : t->name),
             parent, placed, 0, ticks, ",\"refId\":\"" + layerKey(t->id) + '"' + compKeys);
     }
+    if (!pictures.json().isEmpty())
+        assets += (assets.isEmpty() ? "" : ",") + pictures.json();
     layers = front;
     if (!layers.isEmpty())
         layers += ',';
