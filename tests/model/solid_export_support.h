@@ -9,8 +9,11 @@
 
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/picture/picture_commands.h>
+#include <finbook/model/picture/picture_object.h>
 
 #include <QFile>
+#include <QPainter>
 
 #include <array>
 #include <cmath>
@@ -101,6 +104,53 @@ inline model::ExportSource generatedSource(model::Id *posed = nullptr)
 
     model::DocumentSettings s = doc.settings();
     s.canvasSize = QSize(800, 700);
+    return model::ExportSource{doc.frames(), s};
+}
+
+// A painted picture, transparent around a soft-edged rounded body striped in two colours.
+inline QImage paintedBody()
+{
+    QImage image(180, 140, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    QPainterPath body;
+    body.addRoundedRect(QRectF(6, 6, 168, 128), 40, 40);
+    p.setClipPath(body);
+    for (int x = 0; x < 180; x += 10)
+        p.fillRect(QRectF(x, 0, 5, 140), x % 20 ? QColor(230, 120, 30) : QColor(40, 60, 200));
+    return image;
+}
+
+// One frame holding one picture object, "Painted", its right end lifted 40 px by pins (the
+// document's own solve); `object` gets its id.
+inline model::ExportSource pictureSource(model::Id *object = nullptr)
+{
+    model::Document doc;
+    doc.undoStack()->push(new model::InsertFrameCommand(&doc, 0));
+    auto made = model::makePictureObject(
+        model::PictureLayer{QStringLiteral("Painted"), paintedBody(), {}}, QPointF(200, 150));
+    if (!made)
+        qFatal("%s", qPrintable(made.error()));
+    std::vector<model::StrokeGroup> objects{*made};
+    auto *import = new model::ImportPictureCommand(&doc, doc.frameAt(0).id, -1, std::move(objects));
+    doc.undoStack()->push(import);
+    const model::Id id = import->objectIds().front();
+    model::Rig rig;
+    rig.pins = {{doc.allocateId(), QPointF(220, 220), QPointF(220, 220)},
+                {doc.allocateId(), QPointF(360, 220), QPointF(360, 180)}};
+    doc.setRig(id, rig);
+    model::DeformJob job;
+    job.groupId = id;
+    job.key = model::MeshKey::of(*doc.group(id), -1.0);
+    job.rig = rig.atRest();
+    if (const auto setup = model::buildDeformSetup(job))
+        if (const auto pose = model::solvePose(**setup, *doc.group(id)))
+            doc.setDeformed(id, pose->strokes);
+    if (object)
+        *object = id;
+    model::DocumentSettings s = doc.settings();
+    s.canvasSize = QSize(640, 480);
     return model::ExportSource{doc.frames(), s};
 }
 

@@ -26,6 +26,8 @@ struct GlbMesh {
     std::vector<std::array<int, 3>> faces;
     std::array<double, 4> colour{};
     bool blended = false;
+    std::vector<std::array<float, 2>> uv; // TEXCOORD_0, when it has one
+    QImage texture;                       // its material's baseColorTexture, decoded
 };
 
 struct Glb {
@@ -56,7 +58,9 @@ bool accessorBytes(const QJsonObject &json, const QByteArray &bin, int index, in
     const qint64 offset = view[QStringLiteral("byteOffset")].toInteger();
     const qint64 length = view[QStringLiteral("byteLength")].toInteger();
     count = accessor[QStringLiteral("count")].toInteger();
-    const qint64 width = QLatin1String(type) == QLatin1String("VEC3") ? 12 : 4;
+    const qint64 width = QLatin1String(type) == QLatin1String("VEC3")   ? 12
+                         : QLatin1String(type) == QLatin1String("VEC2") ? 8
+                                                                        : 4;
     if (offset % 4 != 0 || offset < 0 || offset + length > bin.size() || count * width > length)
         return false;
     out = bin.mid(offset, count * width);
@@ -169,6 +173,47 @@ Glb parseGlb(const QByteArray &bytes)
         for (int c = 0; c < 4; ++c)
             out.colour[std::size_t(c)] = factor.at(c).toDouble(-1);
         out.blended = material[QStringLiteral("alphaMode")].toString() == QLatin1String("BLEND");
+        if (attributes.contains(QStringLiteral("TEXCOORD_0"))) {
+            QByteArray t;
+            qint64 count = 0;
+            if (!accessorBytes(glb.json, bin, attributes[QStringLiteral("TEXCOORD_0")].toInt(),
+                               5126, "VEC2", t, count) ||
+                count != vertices) {
+                glb.problem = QStringLiteral("bad texture coordinates");
+                return glb;
+            }
+            out.uv.resize(std::size_t(count));
+            std::memcpy(out.uv.data(), t.constData(), std::size_t(t.size()));
+        }
+        const QJsonObject textureRef = material[QStringLiteral("pbrMetallicRoughness")]
+                                           .toObject()[QStringLiteral("baseColorTexture")]
+                                           .toObject();
+        if (!textureRef.isEmpty()) {
+            const QJsonObject texture = glb.json[QStringLiteral("textures")]
+                                            .toArray()
+                                            .at(textureRef[QStringLiteral("index")].toInt())
+                                            .toObject();
+            const QJsonObject image = glb.json[QStringLiteral("images")]
+                                          .toArray()
+                                          .at(texture[QStringLiteral("source")].toInt())
+                                          .toObject();
+            const QJsonObject view = glb.json[QStringLiteral("bufferViews")]
+                                         .toArray()
+                                         .at(image[QStringLiteral("bufferView")].toInt())
+                                         .toObject();
+            const qint64 offset = view[QStringLiteral("byteOffset")].toInteger();
+            const qint64 length = view[QStringLiteral("byteLength")].toInteger();
+            if (image[QStringLiteral("mimeType")].toString() != QLatin1String("image/png") ||
+                offset < 0 || offset + length > bin.size() ||
+                !glb.json[QStringLiteral("samplers")]
+                     .toArray()
+                     .at(texture[QStringLiteral("sampler")].toInt())
+                     .isObject()) {
+                glb.problem = QStringLiteral("bad texture");
+                return glb;
+            }
+            out.texture = QImage::fromData(bin.mid(offset, length), "PNG");
+        }
         glb.meshes.push_back(std::move(out));
     }
     return glb;
@@ -261,6 +306,7 @@ private slots:
     void nothingMeshableWritesNothing();
     void existingFileIsRefusedWithoutOverwrite();
     void cancelLeavesNothing();
+    void picturesAreTexturedSolids();
 };
 
 void TestExportGlb::generatedFrameRoundTrips()
@@ -334,8 +380,9 @@ void TestExportGlb::namesColoursAndOpacity()
     QVERIFY(solids && !solids->objects.empty());
     const geometry::InflatedSolid &solid = solids->objects.front().solid;
     const std::string name = "Arm \"left\"\\\n\xe8\x85\x95"; // …\n腕
-    const std::string bytes = geometry::glbBytes(
-        {{name, solid, 1.0, 0.5, 0.0, 0.5}, {"empty", geometry::InflatedSolid{}, 0, 0, 0, 1}});
+    const std::string bytes =
+        geometry::glbBytes({{name, solid, 1.0, 0.5, 0.0, 0.5, {}},
+                            {"empty", geometry::InflatedSolid{}, 0, 0, 0, 1, {}}});
     const Glb glb = parseGlb(QByteArray::fromStdString(bytes));
     QVERIFY2(glb.problem.isEmpty(), qPrintable(glb.problem));
     QCOMPARE(glb.meshes.size(), std::size_t(1));
@@ -399,6 +446,55 @@ void TestExportGlb::cancelLeavesNothing()
     QVERIFY(!result);
     QCOMPARE(result.error().code, ExportErrorCode::Cancelled);
     QCOMPARE(filesIn(dir.path()), QStringList());
+}
+
+void TestExportGlb::picturesAreTexturedSolids()
+{
+    // A posed picture object: a closed solid where the picture shows, textured with it.
+    Id id = kNoId;
+    const ExportSource source = pictureSource(&id);
+    const StrokeGroup &group = source.frames.front().groups.back();
+    QCOMPARE(group.id, id);
+    QVERIFY(group.isDeformed() && !group.deformed->pictureVertices.empty());
+    QTemporaryDir dir;
+    const QString target = dir.filePath(QStringLiteral("painted.glb"));
+    const auto result = exportAnimation(source, glbOptions(target));
+    QVERIFY2(result.hasValue(), qPrintable(result ? QString() : result.error().message));
+    const Glb glb = parseGlb(readAll(target));
+    QVERIFY2(glb.problem.isEmpty(), qPrintable(glb.problem));
+    QCOMPARE(glb.meshes.size(), std::size_t(1));
+    const GlbMesh &mesh = glb.meshes.front();
+    QCOMPARE(mesh.name, std::string("Painted"));
+    QVERIFY(volumeOf(mesh) > 0.0);
+    QVERIFY(outwardUnitNormals(mesh) > 0.95);
+    QVERIFY(mesh.blended);
+    // The picture itself, pixel for pixel, and a texture coordinate per vertex inside it.
+    const QImage picture =
+        group.picture->data->image.convertToFormat(QImage::Format_ARGB32_Premultiplied);
+    QCOMPARE(mesh.texture.convertToFormat(QImage::Format_ARGB32_Premultiplied), picture);
+    QCOMPARE(mesh.uv.size(), mesh.positions.size());
+    for (const auto &t : mesh.uv)
+        QVERIFY(t[0] >= -1e-6f && t[0] <= 1.0f + 1e-6f && t[1] >= -1e-6f && t[1] <= 1.0f + 1e-6f);
+    // The texture mesh's own vertices come first, each where the pose shows it (y up) and
+    // mapped to its own place in the picture.
+    const Eigen::MatrixX2d &uv = group.picture->mesh->uv;
+    const std::vector<QPointF> &posed = group.deformed->pictureVertices;
+    QVERIFY(mesh.positions.size() > posed.size());
+    double worstPlace = 0.0, worstTexel = 0.0, moved = 0.0;
+    const Eigen::MatrixX2d rest = group.picture->restVertices();
+    for (std::size_t i = 0; i < posed.size(); ++i) {
+        const auto &p = mesh.positions[i];
+        worstPlace =
+            std::max({worstPlace, std::abs(p[0] - posed[i].x()), std::abs(-p[1] - posed[i].y())});
+        worstTexel = std::max(
+            {worstTexel, std::abs(mesh.uv[i][0] * picture.width() - uv(Eigen::Index(i), 0)),
+             std::abs(mesh.uv[i][1] * picture.height() - uv(Eigen::Index(i), 1))});
+        moved = std::max(moved, std::hypot(posed[i].x() - rest(Eigen::Index(i), 0),
+                                           posed[i].y() - rest(Eigen::Index(i), 1)));
+    }
+    QVERIFY2(worstPlace < 1e-3, qPrintable(QString::number(worstPlace)));
+    QVERIFY2(worstTexel < 1e-3, qPrintable(QString::number(worstTexel)));
+    QVERIFY(moved > 20.0); // the pose is not the rest
 }
 
 QTEST_GUILESS_MAIN(TestExportGlb)

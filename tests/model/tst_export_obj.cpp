@@ -29,7 +29,9 @@ struct ParsedObject {
 struct ParsedObj {
     std::string library;
     std::vector<std::array<double, 3>> v;
+    std::vector<std::array<double, 2>> vt;
     long normals = 0;
+    long texturedCorners = 0; // face corners "a/b/c" with a texture index b equal to a
     std::vector<ParsedObject> objects;
     QString problem;
 };
@@ -59,10 +61,16 @@ ParsedObj parseObj(const QByteArray &text)
             ++obj.objects.back().vertices;
         } else if (tag == "vn" && words.size() == 4) {
             ++obj.normals;
+        } else if (tag == "vt" && words.size() == 3) {
+            obj.vt.push_back({words[1].toDouble(), words[2].toDouble()});
         } else if (tag == "f" && words.size() == 4) {
             std::array<int, 3> f{};
-            for (int c = 0; c < 3; ++c)
-                f[std::size_t(c)] = words[c + 1].split('/').front().toInt() - 1;
+            for (int c = 0; c < 3; ++c) {
+                const QList<QByteArray> parts = words[c + 1].split('/');
+                f[std::size_t(c)] = parts.front().toInt() - 1;
+                obj.texturedCorners +=
+                    parts.size() == 3 && !parts[1].isEmpty() && parts[1] == parts[0];
+            }
             obj.objects.back().faces.push_back(f);
         } else {
             obj.problem = QString::fromUtf8(line);
@@ -143,6 +151,7 @@ private slots:
     void cancelLeavesNothing();
     void materialFileName_data();
     void materialFileName();
+    void picturesAreTexturedSolids();
 };
 
 // Through the camera (issue 46), the model is the shot: a camera zoomed 2× on a circle puts
@@ -505,6 +514,56 @@ void TestExportObj::materialFileName()
     QFETCH(QString, target);
     QFETCH(QString, material);
     QCOMPARE(objMaterialPath(target), material);
+}
+
+void TestExportObj::picturesAreTexturedSolids()
+{
+    // A posed picture object: a closed solid where the picture shows, its material naming the
+    // picture written beside the OBJ, a texture coordinate per vertex.
+    Id id = kNoId;
+    const ExportSource source = pictureSource(&id);
+    const StrokeGroup &group = source.frames.front().groups.back();
+    QTemporaryDir dir;
+    const QString target = dir.filePath(QStringLiteral("painted.obj"));
+    const auto result = exportAnimation(source, objOptions(target));
+    QVERIFY2(result.hasValue(), qPrintable(result ? QString() : result.error().message));
+    const QString png = dir.filePath(QStringLiteral("painted_Painted.png"));
+    QCOMPARE(result->files,
+             (QStringList{target, dir.filePath(QStringLiteral("painted.mtl")), png}));
+    const ParsedObj obj = parseObj(readAll(target));
+    QVERIFY2(obj.problem.isEmpty(), qPrintable(obj.problem));
+    QCOMPARE(obj.objects.size(), std::size_t(1));
+    QVERIFY(volumeOf(obj, obj.objects.front()) > 0.0);
+    QCOMPARE(obj.vt.size(), obj.v.size());
+    QCOMPARE(obj.texturedCorners, long(obj.objects.front().faces.size() * 3));
+    const QByteArray mtl = readAll(dir.filePath(QStringLiteral("painted.mtl")));
+    QVERIFY(mtl.contains("map_Kd painted_Painted.png\n"));
+    QVERIFY(mtl.contains("map_d painted_Painted.png\n"));
+    QCOMPARE(QImage(png).convertToFormat(QImage::Format_ARGB32_Premultiplied),
+             group.picture->data->image.convertToFormat(QImage::Format_ARGB32_Premultiplied));
+    // The texture mesh's own vertices first, where the pose shows them (y up), each mapped to
+    // its place in the picture (OBJ's v up).
+    const Eigen::MatrixX2d &uv = group.picture->mesh->uv;
+    const std::vector<QPointF> &posed = group.deformed->pictureVertices;
+    const QSize size = group.picture->data->image.size();
+    double worstPlace = 0.0, worstTexel = 0.0;
+    for (std::size_t i = 0; i < posed.size(); ++i) {
+        worstPlace = std::max({worstPlace, std::abs(obj.v[i][0] - posed[i].x()),
+                               std::abs(-obj.v[i][1] - posed[i].y())});
+        worstTexel =
+            std::max({worstTexel, std::abs(obj.vt[i][0] * size.width() - uv(Eigen::Index(i), 0)),
+                      std::abs((1.0 - obj.vt[i][1]) * size.height() - uv(Eigen::Index(i), 1))});
+    }
+    QVERIFY2(worstPlace < 1e-6, qPrintable(QString::number(worstPlace)));
+    QVERIFY2(worstTexel < 1e-6, qPrintable(QString::number(worstTexel)));
+    // A picture file in the way is refused as the OBJ would be, and nothing is written.
+    QVERIFY(QFile::remove(target));
+    QVERIFY(QFile::remove(dir.filePath(QStringLiteral("painted.mtl"))));
+    const auto again = exportAnimation(source, objOptions(target));
+    QVERIFY(!again.hasValue());
+    QVERIFY(again.error().message.contains(QStringLiteral("painted_Painted.png")));
+    QVERIFY(!QFileInfo::exists(target));
+    QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("painted.mtl"))));
 }
 
 QTEST_GUILESS_MAIN(TestExportObj)

@@ -97,7 +97,8 @@ void appendTriple(std::string &json, const float values[3])
 }
 
 struct Parts {
-    std::string meshes, materials, nodes, accessors, views;
+    std::string meshes, materials, nodes, accessors, views, images, textures;
+    int imageCount = 0;
 };
 
 void addAccessor(Parts &parts, int &accessors, int view, int componentType, std::size_t count,
@@ -133,18 +134,27 @@ void addView(Parts &parts, int &views, const View &view)
     appendNumber(json, view.offset);
     json += ",\"byteLength\":";
     appendNumber(json, view.length);
-    json += ",\"target\":";
-    appendNumber(json, view.target);
+    if (view.target != 0) { // an image's view has none
+        json += ",\"target\":";
+        appendNumber(json, view.target);
+    }
     json += '}';
 }
 
-void addMaterial(Parts &parts, int index, const GlbObject &object)
+// `texture`: the index of the object's picture among the textures, or −1 for a flat colour.
+void addMaterial(Parts &parts, int index, const GlbObject &object, int texture)
 {
     std::string &json = parts.materials;
     if (index > 0)
         json += ',';
     json += "{\"name\":";
     appendString(json, object.name);
+    if (texture >= 0) {
+        json += ",\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":";
+        appendNumber(json, texture);
+        json += "},\"metallicFactor\":0,\"roughnessFactor\":1},\"alphaMode\":\"BLEND\"}";
+        return;
+    }
     json += ",\"pbrMetallicRoughness\":{\"baseColorFactor\":[";
     for (const double c : {linear(object.red), linear(object.green), linear(object.blue)}) {
         appendNumber(json, c);
@@ -159,7 +169,10 @@ void addMaterial(Parts &parts, int index, const GlbObject &object)
     json += '}';
 }
 
-void addMeshAndNode(Parts &parts, int index, const std::string &name, int firstAccessor)
+// The accessors from `firstAccessor` on: positions, normals, indices, then (`textured`) the
+// texture coordinates.
+void addMeshAndNode(Parts &parts, int index, const std::string &name, int firstAccessor,
+                    bool textured)
 {
     if (index > 0) {
         parts.meshes += ',';
@@ -170,6 +183,7 @@ void addMeshAndNode(Parts &parts, int index, const std::string &name, int firstA
     parts.meshes += "{\"name\":" + quoted + ",\"primitives\":[{\"attributes\":{\"POSITION\":" +
                     std::to_string(firstAccessor) +
                     ",\"NORMAL\":" + std::to_string(firstAccessor + 1) +
+                    (textured ? ",\"TEXCOORD_0\":" + std::to_string(firstAccessor + 3) : "") +
                     "},\"indices\":" + std::to_string(firstAccessor + 2) +
                     ",\"material\":" + std::to_string(index) + ",\"mode\":4}]}";
     parts.nodes += "{\"name\":" + quoted + ",\"mesh\":" + std::to_string(index) + '}';
@@ -188,6 +202,11 @@ std::string json(const Parts &parts, int objects, std::size_t binLength)
         }
         json += "]}],\"nodes\":[" + parts.nodes + "],\"meshes\":[" + parts.meshes +
                 "],\"materials\":[" + parts.materials + "],\"accessors\":[" + parts.accessors +
+                (parts.imageCount > 0
+                     ? "],\"images\":[" + parts.images + "],\"textures\":[" + parts.textures +
+                           "],\"samplers\":[{\"magFilter\":9729,\"minFilter\":9987,"
+                           "\"wrapS\":33071,\"wrapT\":33071}"
+                     : std::string()) +
                 "],\"bufferViews\":[" + parts.views + "],\"buffers\":[{\"byteLength\":";
         appendNumber(json, binLength);
         json += "}]}";
@@ -204,7 +223,8 @@ std::string glbBytes(const std::vector<GlbObject> &objects)
     constexpr std::size_t kMaxBytes = std::numeric_limits<std::uint32_t>::max() - 1024;
     std::size_t needed = 0;
     for (const GlbObject &object : objects)
-        needed += std::size_t(object.solid.V.rows()) * 24 + std::size_t(object.solid.F.rows()) * 12;
+        needed += std::size_t(object.solid.V.rows()) * 32 +
+                  std::size_t(object.solid.F.rows()) * 12 + object.png.size() + 4;
     if (needed > kMaxBytes)
         return {};
 
@@ -232,8 +252,29 @@ std::string glbBytes(const std::vector<GlbObject> &objects)
         addAccessor(parts, accessors, firstView, kFloat, vertices, "VEC3", lo, hi);
         addAccessor(parts, accessors, firstView + 1, kFloat, vertices, "VEC3");
         addAccessor(parts, accessors, firstView + 2, kUnsignedInt, indices.length / 4, "SCALAR");
-        addMaterial(parts, written, object);
-        addMeshAndNode(parts, written, object.name, firstAccessor);
+        int texture = -1;
+        if (object.textured()) {
+            const View uv{bin.size(), vertices * 8, kArrayBuffer};
+            for (Eigen::Index r = 0; r < solid.UV.rows(); ++r)
+                for (int c = 0; c < 2; ++c)
+                    appendBytes(bin, static_cast<float>(solid.UV(r, c)));
+            addView(parts, views, uv);
+            addAccessor(parts, accessors, views - 1, kFloat, vertices, "VEC2");
+            const View image{bin.size(), object.png.size(), 0};
+            bin += object.png;
+            bin.append((4 - bin.size() % 4) % 4, '\0');
+            addView(parts, views, image);
+            texture = parts.imageCount++;
+            if (texture > 0) {
+                parts.images += ',';
+                parts.textures += ',';
+            }
+            parts.images +=
+                "{\"bufferView\":" + std::to_string(views - 1) + ",\"mimeType\":\"image/png\"}";
+            parts.textures += "{\"sampler\":0,\"source\":" + std::to_string(texture) + '}';
+        }
+        addMaterial(parts, written, object, texture);
+        addMeshAndNode(parts, written, object.name, firstAccessor, texture >= 0);
         ++written;
     }
 

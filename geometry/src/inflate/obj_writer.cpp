@@ -56,13 +56,24 @@ bool writeObj(std::ostream &out, const std::vector<ObjObject> &objects,
             writeRow(out, "v", solid.V.row(i));
         for (Eigen::Index i = 0; i < solid.N.rows(); ++i)
             writeRow(out, "vn", solid.N.row(i));
+        const bool textured = solid.textured();
+        for (Eigen::Index i = 0; textured && i < solid.UV.rows(); ++i) {
+            out << "vt ";
+            writeNumber(out, solid.UV(i, 0));
+            out << ' ';
+            writeNumber(out, 1.0 - solid.UV(i, 1)); // OBJ's v runs up the image
+            out << '\n';
+        }
         for (Eigen::Index f = 0; f < solid.F.rows(); ++f) {
             out << 'f';
             for (int c = 0; c < 3; ++c) {
                 const long index = offset + solid.F(f, c);
                 out << ' ';
                 writeNumber(out, index);
-                out << "//";
+                out << '/';
+                if (textured)
+                    writeNumber(out, index);
+                out << '/';
                 writeNumber(out, index);
             }
             out << '\n';
@@ -75,16 +86,22 @@ bool writeObj(std::ostream &out, const std::vector<ObjObject> &objects,
 
 bool writeMtl(std::ostream &out, const std::vector<MtlMaterial> &materials)
 {
-    out << "# Finbook materials: flat fill colours\n";
+    out << "# Finbook materials: flat fill colours, pictures\n";
     for (const MtlMaterial &material : materials) {
-        const Eigen::RowVector3d colour(material.red, material.green, material.blue);
+        const bool textured = !material.texture.empty();
+        const Eigen::RowVector3d colour =
+            textured ? Eigen::RowVector3d::Ones()
+                     : Eigen::RowVector3d(material.red, material.green, material.blue);
         out << "\nnewmtl " << safeName(material.name) << '\n';
         writeRow(out, "Kd", colour);
         writeRow(out, "Ka", colour);
         writeRow(out, "Ks", Eigen::RowVector3d::Zero());
         out << "d ";
-        writeNumber(out, material.opacity);
+        writeNumber(out, textured ? 1.0 : material.opacity);
         out << "\nillum 1\n";
+        if (textured)
+            out << "map_Kd " << safeName(material.texture) << "\nmap_d "
+                << safeName(material.texture) << '\n';
     }
     out.flush();
     return bool(out);

@@ -1,11 +1,13 @@
 // The 3D model export as glTF 2.0 binary: one frame's objects inflated to closed solids
-// (frame_solids.h), each a named node and mesh in its export colour, in one self-contained
-// .glb file (geometry/inflate/glb_writer.h). Written the safe way the other single files are:
-// locked, written beside the target, synced and renamed into place only when complete.
+// (frame_solids.h), each a named node and mesh in its export colour (a picture object textured
+// with its picture, embedded), in one self-contained .glb file (geometry/inflate/glb_writer.h).
+// Written the safe way the other single files are: locked, written beside the target, synced and
+// renamed into place only when complete.
 #include "export_formats.h"
 #include "export_text.h"
 
 #include <finbook/geometry/inflate/glb_writer.h>
+#include <finbook/model/picture/picture_object.h>
 
 #include <QColor>
 #include <QFileInfo>
@@ -24,7 +26,8 @@ QByteArray glbFile(const FrameSolids &solids)
                                  : object.name.trimmed();
         const QColor colour = QColor::fromRgba(object.color);
         objects.push_back({name.toStdString(), object.solid, colour.redF(), colour.greenF(),
-                           colour.blueF(), colour.alphaF()});
+                           colour.blueF(), colour.alphaF(),
+                           object.picture ? object.picture->png.toStdString() : std::string()});
     }
     return QByteArray::fromStdString(geometry::glbBytes(objects));
 }

@@ -1,6 +1,7 @@
 // The 3D model export: one frame's objects inflated to closed solids (frame_solids.h), written
 // as a Wavefront OBJ file with one object (and group) per drawing object and a material file
-// beside it (NAME.mtl) holding each object's colour, as Blender imports them. Both files go
+// beside it (NAME.mtl) holding each object's colour, as Blender imports them; a picture object's
+// material names its picture, written beside them too (NAME_OBJECT.png). Both files go
 // through the same safe path as the other single-file formats: locked, written beside the
 // target, synced and renamed into place only when complete.
 #include "export_formats.h"
@@ -9,10 +10,13 @@
 #include "target_lock.h"
 
 #include <finbook/model/export/frame_solids.h>
+#include <finbook/model/picture/picture_object.h>
 
 #include <QColor>
+#include <QDir>
 #include <QFileInfo>
 
+#include <algorithm>
 #include <cerrno>
 #include <set>
 #include <sstream>
@@ -49,7 +53,39 @@ struct ObjFiles {
     QByteArray obj, mtl;
 };
 
-ObjFiles objFiles(const FrameSolids &solids, const QString &materialFile)
+// A picture object's picture, written beside the OBJ for its material: NAME_OBJECT.png.
+struct PictureFile {
+    const PictureData *picture = nullptr;
+    ExportOptions options; // its target (and bytes of it), as the OBJ's
+};
+
+// One file per picture the objects show (objects sharing a picture share its file), named
+// after the OBJ and the first object showing it.
+std::vector<PictureFile> pictureFiles(const FrameSolids &solids, const ExportOptions &options)
+{
+    const std::vector<std::string> names = objectNames(solids.objects);
+    const QFileInfo target(options.target);
+    QByteArray nativeBase = options.nativeName;
+    if (const qsizetype dot = nativeBase.lastIndexOf('.'); dot > 0)
+        nativeBase.truncate(dot);
+    std::vector<PictureFile> files;
+    for (std::size_t i = 0; i < solids.objects.size(); ++i) {
+        const PictureData *picture = solids.objects[i].picture.get();
+        if (!picture || std::any_of(files.begin(), files.end(),
+                                    [&](const PictureFile &f) { return f.picture == picture; }))
+            continue;
+        PictureFile file{picture, options};
+        const QString suffix = QStringLiteral("_%1.png").arg(QString::fromStdString(names[i]));
+        file.options.target = target.dir().filePath(target.completeBaseName() + suffix);
+        if (!options.nativeName.isEmpty())
+            file.options.nativeName = nativeBase + suffix.toUtf8();
+        files.push_back(std::move(file));
+    }
+    return files;
+}
+
+ObjFiles objFiles(const FrameSolids &solids, const QString &materialFile,
+                  const std::vector<PictureFile> &pictures)
 {
     const std::vector<std::string> names = objectNames(solids.objects);
     std::vector<geometry::ObjObject> objects;
@@ -60,7 +96,10 @@ ObjFiles objFiles(const FrameSolids &solids, const QString &materialFile)
         objects.push_back({names[i], object.solid});
         const QColor colour = QColor::fromRgba(object.color);
         materials.push_back(
-            {names[i], colour.redF(), colour.greenF(), colour.blueF(), colour.alphaF()});
+            {names[i], colour.redF(), colour.greenF(), colour.blueF(), colour.alphaF(), {}});
+        for (const PictureFile &file : pictures)
+            if (file.picture == object.picture.get())
+                materials.back().texture = QFileInfo(file.options.target).fileName().toStdString();
     }
     std::ostringstream obj, mtl;
     geometry::writeObj(obj, objects, links);
@@ -159,7 +198,13 @@ ExportOutcome exportObj(const ExportContext &context)
     const auto solids = exportedSolids(context);
     if (!solids)
         return unexpected(solids.error());
-    const ObjFiles files = objFiles(*solids, mtlOptions.target);
+    const std::vector<PictureFile> pictures = pictureFiles(*solids, options);
+    for (const PictureFile &picture : pictures)
+        if (picture.options.target == target || picture.options.target == mtlOptions.target)
+            return unexpected(targetExists(picture.options.target));
+        else if (auto error = checkFileTarget(picture.options))
+            return unexpected(*error);
+    const ObjFiles files = objFiles(*solids, mtlOptions.target, pictures);
 
     PendingFile pendingObj(target), pendingMtl(mtlOptions.target);
     QString reason;
@@ -169,6 +214,18 @@ ExportOutcome exportObj(const ExportContext &context)
         return unexpected(writeFailed(target, *failed));
     if (auto failed = writeSynced(pendingMtl.file(), files.mtl))
         return unexpected(writeFailed(mtlOptions.target, *failed));
+    // The pictures before the materials that name them, each complete before it is in place.
+    QStringList written;
+    for (const PictureFile &picture : pictures) {
+        PendingFile pending(picture.options.target);
+        if (!pending.open(&reason))
+            return unexpected(writeFailed(picture.options.target, reason));
+        if (auto failed = writeSynced(pending.file(), picture.picture->png))
+            return unexpected(writeFailed(picture.options.target, *failed));
+        if (auto error = commitFile(pending, picture.options))
+            return unexpected(*error);
+        written << picture.options.target;
+    }
     // The materials first: an OBJ file in place always finds its colours. Should the OBJ
     // then fail, the material file is put back as it was (or goes again if this export added it).
     MaterialSetAside oldMaterials(nativeTargetPath(mtlOptions));
@@ -180,7 +237,7 @@ ExportOutcome exportObj(const ExportContext &context)
     }
     guard.keep();
 
-    return modelResult(context, {target, mtlOptions.target}, *solids);
+    return modelResult(context, QStringList{target, mtlOptions.target} + written, *solids);
 }
 
 } // namespace finbook::model

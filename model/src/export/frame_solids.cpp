@@ -1,3 +1,4 @@
+#include <finbook/geometry/embedding.h>
 #include <finbook/geometry/inflate/inflation.h>
 #include <finbook/geometry/inflate/layers.h>
 #include <finbook/geometry/object_mesh.h>
@@ -5,6 +6,7 @@
 #include <finbook/model/export/frame_solids.h>
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/fill/fill_resolve.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
 
@@ -17,8 +19,15 @@
 namespace finbook::model {
 
 namespace {
+bool hasPicture(const StrokeGroup &group)
+{
+    return group.picture && pictureIsValid(*group.picture);
+}
+
 bool hasPoints(const StrokeGroup &group)
 {
+    if (hasPicture(group))
+        return true;
     return std::any_of(group.strokes.begin(), group.strokes.end(),
                        [](const Stroke &s) { return s.data && !s.data->points.empty(); });
 }
@@ -156,6 +165,68 @@ Expected<geometry::InflatedSolid, NoSolid> solidOf(const StrokeGroup &group, dou
         return unexpected(NoSolid::OverBudget);
     return solid;
 }
+
+// A picture object's solid: its texture mesh at rest inflated, textured (UV from each vertex's
+// rest position through the picture's place), then every vertex carried where the pose shows
+// the picture (through the rest mesh's triangles), its normals made anew from the posed faces.
+Expected<geometry::InflatedSolid, NoSolid> pictureSolid(const StrokeGroup &group, qint64 budget)
+{
+    const ObjectPicture &picture = *group.picture;
+    const Eigen::MatrixX2d rest = picture.restVertices();
+    const Eigen::MatrixX3i &F = picture.mesh->F;
+    for (Eigen::Index i = 0; i < rest.rows(); ++i)
+        if (std::abs(rest(i, 0)) > kMaxModelCoordinate ||
+            std::abs(rest(i, 1)) > kMaxModelCoordinate)
+            return unexpected(NoSolid::TooFar);
+    const auto mesh = geometry::objectMeshFrom(rest, F);
+    if (!mesh)
+        return unexpected(NoSolid::Failed);
+    if (2 * mesh->V.rows() > budget)
+        return unexpected(NoSolid::OverBudget);
+    const auto inflation = geometry::inflateObjectMesh(*mesh);
+    if (!inflation)
+        return unexpected(NoSolid::Failed);
+    geometry::InflatedSolid solid = geometry::inflatedSolid(*inflation);
+    if (!usable(solid) || solid.V.rows() > budget)
+        return unexpected(usable(solid) ? NoSolid::OverBudget : NoSolid::Failed);
+    // Where each vertex lies on the rest canvas (y down), and so in the picture.
+    Eigen::MatrixX2d at(solid.V.rows(), 2);
+    at.col(0) = solid.V.col(0);
+    at.col(1) = -solid.V.col(1);
+    const QTransform toTexture = picture.place.inverted();
+    const QSizeF size = picture.data->image.size();
+    solid.UV.resize(solid.V.rows(), 2);
+    for (Eigen::Index i = 0; i < at.rows(); ++i) {
+        const QPointF t = toTexture.map(QPointF(at(i, 0), at(i, 1)));
+        solid.UV.row(i) << t.x() / size.width(), t.y() / size.height();
+    }
+    const Eigen::MatrixX2d shown = shownPictureVertices(group);
+    if (shown.rows() != rest.rows() || shown == rest)
+        return solid;
+    const Eigen::MatrixX2d posed = geometry::applyEmbedding(geometry::embed(rest, F, at), shown, F);
+    if (!posed.allFinite())
+        return unexpected(NoSolid::Failed);
+    solid.V.col(0) = posed.col(0);
+    solid.V.col(1) = -posed.col(1);
+    solid.N.setZero();
+    for (Eigen::Index f = 0; f < solid.F.rows(); ++f) {
+        const Eigen::Vector3d a = solid.V.row(solid.F(f, 0)), b = solid.V.row(solid.F(f, 1)),
+                              c = solid.V.row(solid.F(f, 2));
+        const Eigen::Vector3d n = (b - a).cross(c - a); // area-weighted, outward
+        for (int k = 0; k < 3; ++k)
+            solid.N.row(solid.F(f, k)) += n.transpose();
+    }
+    for (Eigen::Index i = 0; i < solid.N.rows(); ++i) {
+        const double length = solid.N.row(i).norm();
+        if (length > 0.0)
+            solid.N.row(i) /= length;
+        else
+            solid.N.row(i) << 0.0, 0.0, 1.0;
+    }
+    if (!usable(solid))
+        return unexpected(NoSolid::Failed);
+    return solid;
+}
 } // namespace
 
 QRgb objectExportColor(const StrokeGroup &group, double closeGap)
@@ -194,7 +265,7 @@ std::optional<FrameSolids> frameSolids(const Frame &frame, const DocumentSetting
         std::pair<std::vector<const StrokeData *>, double> key{{}, group.meshDensity};
         for (const Stroke &s : group.strokes)
             key.first.push_back(s.data.get());
-        const bool shared = !group.isDeformed();
+        const bool shared = !group.isDeformed() && !hasPicture(group);
         Expected<geometry::InflatedSolid, NoSolid> solid = unexpected(NoSolid::Failed);
         if (const auto same = shared ? made.find(key) : made.end(); same != made.end()) {
             const geometry::InflatedSolid &copy = out.objects[same->second].solid;
@@ -203,14 +274,18 @@ std::optional<FrameSolids> frameSolids(const Frame &frame, const DocumentSetting
             else
                 solid = copy;
         } else {
-            solid = solidOf(group, settings.closeGap, maxVertices - out.vertices);
+            solid = hasPicture(group)
+                        ? pictureSolid(group, maxVertices - out.vertices)
+                        : solidOf(group, settings.closeGap, maxVertices - out.vertices);
             if (solid && shared)
                 made.emplace(std::move(key), out.objects.size());
         }
         if (solid) {
             out.vertices += solid->V.rows();
-            out.objects.push_back({group.id, group.name,
-                                   objectExportColor(group, settings.closeGap), std::move(*solid)});
+            out.objects.push_back(
+                {group.id, group.name,
+                 hasPicture(group) ? QRgb(0xffffffff) : objectExportColor(group, settings.closeGap),
+                 std::move(*solid), hasPicture(group) ? group.picture->data : nullptr});
         } else if (solid.error() == NoSolid::OverBudget) {
             out.tooLarge = true;
             return out;

@@ -19,12 +19,16 @@ namespace finbook::geometry {
 //           the outline (outline vertices are shared by both halves)
 //   N  k×3  unit outward normals, per vertex
 //   F  2m×3 triangles, counter-clockwise seen from outside: the m top ones, then the m bottom
+//   UV k×2  texture coordinates per vertex, or empty (untextured; inflatedSolid leaves it so):
+//           [0, 1] across the image, (0, 0) its top-left corner, v down (glTF's convention)
 // Promise: every edge is shared by exactly two triangles, once in each direction (closed
 // and consistently oriented), and the signed volume is 2 × inflatedVolume(inflation) ≥ 0.
 struct InflatedSolid {
     Eigen::MatrixX3d V;
     Eigen::MatrixX3d N;
     Eigen::MatrixX3i F;
+    Eigen::MatrixX2d UV;
+    bool textured() const { return UV.rows() > 0 && UV.rows() == V.rows(); }
 };
 
 InflatedSolid inflatedSolid(const Inflation &inflation);
@@ -47,7 +51,9 @@ struct ObjMaterials {
 };
 
 // Writes Wavefront OBJ text: a comment, then per object "o name", its "v" and "vn" lines and
-// its faces as "f a//a b//b c//c" (1-based, positions and normals share indices). Numbers
+// its faces as "f a//a b//b c//c" (1-based, positions and normals share indices); a textured
+// solid also has a "vt" line per vertex (v up, as OBJ has it) and faces "f a/a/a b/b/b c/c/c".
+// Numbers
 // are written in the shortest form that reads back exactly, independent of the locale; line
 // breaks and other control characters in names become '_'. Returns false if the stream
 // failed.
@@ -55,15 +61,18 @@ bool writeObj(std::ostream &out, const std::vector<ObjObject> &objects,
               const ObjMaterials &materials = {});
 
 // One material of an MTL file: a flat diffuse colour, components in [0, 1] (as stored, sRGB),
-// and its opacity.
+// and its opacity; or a picture (`texture`, a file name relative to the .mtl) that gives the
+// colour and, by its alpha, the opacity.
 struct MtlMaterial {
     std::string name;
     double red = 0.0, green = 0.0, blue = 0.0;
     double opacity = 1.0;
+    std::string texture;
 };
 
 // Writes the MTL text for `materials`: per material "newmtl", its diffuse and ambient colour
-// ("Kd", "Ka"), no specular highlight, its opacity ("d") and "illum 1". Names as in writeObj.
+// ("Kd", "Ka"), no specular highlight, its opacity ("d") and "illum 1"; with a texture, the
+// colour white and "map_Kd" and "map_d" naming it. Names as in writeObj.
 // Returns false if the stream failed.
 bool writeMtl(std::ostream &out, const std::vector<MtlMaterial> &materials);
 

@@ -7,16 +7,22 @@
 #include <finbook/model/types.h>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
 namespace finbook::model {
+
+struct PictureData; // picture/picture_object.h
 
 struct ObjectSolid {
     Id groupId = kNoId;
     QString name; // the object's name as the user gave it (may be empty or repeated)
     QRgb color = 0xff000000;
     geometry::InflatedSolid solid; // y up, canvas px (inflated_solid.h)
+    // A picture object's picture, which its solid's texture coordinates map into (both its
+    // faces show it); null for a drawn object.
+    std::shared_ptr<const PictureData> picture;
 };
 
 // A 3D model holds at most this many vertices, every object's solid together: about 25 MB of
@@ -29,7 +35,7 @@ constexpr double kMaxModelCoordinate = 1e6;
 
 struct FrameSolids {
     std::vector<ObjectSolid> objects; // back to front, as the frame holds them
-    int candidates = 0;               // visible objects with at least one stroke point
+    int candidates = 0; // visible objects with at least one stroke point, or a picture
     // Of those, the ones that are a dot or a straight line (every point within one pen width
     // of a line), lie too far out, or whose shape could not be meshed or inflated.
     int skipped = 0;
@@ -46,6 +52,9 @@ QRgb objectExportColor(const StrokeGroup &group, double closeGap);
 // Called after each object with (objects done, candidates); returning false cancels.
 using SolidsProgress = std::function<bool(int done, int total)>;
 
+// A picture object is its picture's shape as it shows (posed where it is posed: its texture
+// mesh at rest inflated, every point then carried where the pose takes it), textured with the
+// picture; a cut-out pose's pieces are not parted in 3D.
 // Every visible object of `frame` with strokes, shaped from its displayed strokes
 // (posedStrokes) as meshing sees them (its mesh density, the document's gap closing), meshed
 // (geometry::buildObjectMesh), inflated and closed; an object whose every stroke closes a
