@@ -13,7 +13,6 @@
 #include <finbook/model/picture/picture_object.h>
 
 #include <QColor>
-#include <QDir>
 #include <QFileInfo>
 
 #include <algorithm>
@@ -64,10 +63,11 @@ struct PictureFile {
 std::vector<PictureFile> pictureFiles(const FrameSolids &solids, const ExportOptions &options)
 {
     const std::vector<std::string> names = objectNames(solids.objects);
-    const QFileInfo target(options.target);
-    QByteArray nativeBase = options.nativeName;
-    if (const qsizetype dot = nativeBase.lastIndexOf('.'); dot > 0)
-        nativeBase.truncate(dot);
+    // The material file's name without its ".mtl": the OBJ's own text, its suffix dropped.
+    const QString stem = objMaterialPath(options.target).chopped(4);
+    QByteArray nativeStem = options.nativeName;
+    if (const qsizetype dot = nativeStem.lastIndexOf('.'); dot > 0)
+        nativeStem.truncate(dot);
     std::vector<PictureFile> files;
     for (std::size_t i = 0; i < solids.objects.size(); ++i) {
         const PictureData *picture = solids.objects[i].picture.get();
@@ -76,9 +76,9 @@ std::vector<PictureFile> pictureFiles(const FrameSolids &solids, const ExportOpt
             continue;
         PictureFile file{picture, options};
         const QString suffix = QStringLiteral("_%1.png").arg(QString::fromStdString(names[i]));
-        file.options.target = target.dir().filePath(target.completeBaseName() + suffix);
+        file.options.target = stem + suffix;
         if (!options.nativeName.isEmpty())
-            file.options.nativeName = nativeBase + suffix.toUtf8();
+            file.options.nativeName = nativeStem + suffix.toUtf8();
         files.push_back(std::move(file));
     }
     return files;
