@@ -223,12 +223,13 @@ QJsonObject benchLayer(const model::PictureLayer &layer, const PictureBenchOptio
         row[QStringLiteral("error")] = QString::fromStdString(cover.error().message);
         return row;
     }
-    const auto mesh = geometry::buildObjectMesh(*cover, meshOptions);
+    auto mesh = geometry::buildObjectMesh(*cover, meshOptions);
     row[QStringLiteral("mesh_ms")] = msSince(start); // its own trace at alpha ≥ 1 included
     if (!mesh) {
         row[QStringLiteral("error")] = QString::fromStdString(mesh.error().message);
         return row;
     }
+    mesh->F = model::drawingOrder(mesh->V, mesh->F); // as meshPicture orders them
     row[QStringLiteral("mesh_area_px")] = geometry::regionArea(mesh->region); // pixels drawn
     row[QStringLiteral("mesh_vertices")] = qint64(mesh->V.rows());
     row[QStringLiteral("mesh_triangles")] = qint64(mesh->F.rows());

@@ -9,8 +9,11 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <random>
 
 using namespace finbook::model;
 
@@ -208,6 +211,7 @@ private slots:
     void bilinearAndPremultipliedEdges();
     void opacityAndSourceOver();
     void brokenInputSkipped();
+    void drawingOrderKeepsTheTrianglesAndThePicture();
 };
 
 void TestTexturedMesh::restReproducesPicture()
@@ -440,6 +444,52 @@ void TestTexturedMesh::brokenInputSkipped()
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x)
             QCOMPARE(untouched.pixel(x, y), qRgba(10, 20, 30, 255));
+}
+
+void TestTexturedMesh::drawingOrderKeepsTheTrianglesAndThePicture()
+{
+    // A grid whose triangles come in a scrambled order, as a mesher's may.
+    const Grid g = grid(200, 150, 10.0);
+    Eigen::MatrixX3i scrambled = g.F;
+    std::vector<Eigen::Index> rows(std::size_t(g.F.rows()));
+    std::iota(rows.begin(), rows.end(), 0);
+    std::mt19937 random(7);
+    std::shuffle(rows.begin(), rows.end(), random);
+    for (std::size_t r = 0; r < rows.size(); ++r)
+        scrambled.row(Eigen::Index(r)) = g.F.row(rows[r]);
+    const Eigen::MatrixX3i ordered = drawingOrder(g.V, scrambled);
+    // The same triangles, each once, each with its corners in the same order.
+    const auto sortedRows = [](const Eigen::MatrixX3i &F) {
+        std::vector<std::array<int, 3>> out;
+        for (Eigen::Index f = 0; f < F.rows(); ++f)
+            out.push_back({F(f, 0), F(f, 1), F(f, 2)});
+        std::sort(out.begin(), out.end());
+        return out;
+    };
+    QCOMPARE(sortedRows(ordered), sortedRows(scrambled));
+    // Band by band of 32 rows, left to right within a band.
+    double lastBand = -1, lastX = -1;
+    for (Eigen::Index f = 0; f < ordered.rows(); ++f) {
+        const Eigen::RowVector2d centre =
+            (g.V.row(ordered(f, 0)) + g.V.row(ordered(f, 1)) + g.V.row(ordered(f, 2))) / 3.0;
+        const double band = std::floor(centre.y() / 32.0);
+        QVERIFY(band > lastBand || (band == lastBand && centre.x() >= lastX));
+        lastBand = band;
+        lastX = centre.x();
+    }
+    // Posed (no folds), the picture drawn is the same pixel for pixel.
+    const QImage picture = paintedPicture(200, 150);
+    const Eigen::MatrixX2d V = perturbed(g, 2.5, 11);
+    QImage a = transparentTarget(220, 170), b = transparentTarget(220, 170);
+    drawTexturedMesh(a, QTransform::fromTranslate(5, 7), picture, g.V, V, scrambled);
+    drawTexturedMesh(b, QTransform::fromTranslate(5, 7), picture, g.V, V, ordered);
+    QCOMPARE(a, b);
+    // A face out of range goes last, unchanged.
+    Eigen::MatrixX3i broken = scrambled;
+    broken.row(0) << 0, 1, int(g.V.rows()) + 5;
+    const Eigen::MatrixX3i brokenOrdered = drawingOrder(g.V, broken);
+    QCOMPARE(Eigen::RowVector3i(brokenOrdered.row(brokenOrdered.rows() - 1)),
+             Eigen::RowVector3i(broken.row(0)));
 }
 
 QTEST_GUILESS_MAIN(TestTexturedMesh)

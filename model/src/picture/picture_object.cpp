@@ -87,8 +87,8 @@ Expected<PictureMeshPtr, QString> meshPicture(const QImage &image, double densit
                                                       "The picture's outline cannot be meshed: %1"))
                               .arg(QString::fromStdString(mesh.error().message)));
     auto out = std::make_shared<PictureMesh>();
+    out->F = drawingOrder(mesh->V, mesh->F);
     out->uv = std::move(mesh->V);
-    out->F = std::move(mesh->F);
     return PictureMeshPtr(std::move(out));
 }
 

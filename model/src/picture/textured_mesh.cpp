@@ -274,6 +274,31 @@ void drawStrips(const Raster &band, const FaceStrips &strips, const std::vector<
 } // namespace
 } // namespace picture_detail
 
+Eigen::MatrixX3i drawingOrder(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F)
+{
+    using picture_detail::kStripRows;
+    std::vector<std::pair<std::pair<double, double>, Eigen::Index>> keys;
+    keys.reserve(std::size_t(F.rows()));
+    const auto n = V.rows();
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+        const int i = F(f, 0), j = F(f, 1), k = F(f, 2);
+        if (i < 0 || j < 0 || k < 0 || i >= n || j >= n || k >= n || !V.row(i).allFinite() ||
+            !V.row(j).allFinite() || !V.row(k).allFinite()) {
+            keys.push_back({{std::numeric_limits<double>::infinity(), 0.0}, f});
+            continue;
+        }
+        const double x = (V(i, 0) + V(j, 0) + V(k, 0)) / 3.0;
+        const double y = (V(i, 1) + V(j, 1) + V(k, 1)) / 3.0;
+        keys.push_back({{std::floor(y / kStripRows), x}, f});
+    }
+    std::stable_sort(keys.begin(), keys.end(),
+                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    Eigen::MatrixX3i ordered(F.rows(), 3);
+    for (std::size_t r = 0; r < keys.size(); ++r)
+        ordered.row(Eigen::Index(r)) = F.row(keys[r].second);
+    return ordered;
+}
+
 void drawTexturedMesh(QImage &target, const QTransform &view, const QImage &texture,
                       const Eigen::MatrixX2d &uv, const Eigen::MatrixX2d &V,
                       const Eigen::MatrixX3i &F, double opacity)
