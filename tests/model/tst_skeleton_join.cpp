@@ -1,7 +1,7 @@
 // Characters made of parts (issue 9/10): an arm drawn over a torso joins the torso's skeleton,
 // posing the torso moves the arm (and its drawing), the arm's weights include the torso bone
 // it hangs from, and joins are undoable, never make the drawing jump, follow Duplicate Frame
-// and are saved.
+// and are saved. A painted picture joins a drawn part the same way.
 #include "random_edits.h"
 #include "stroke_support.h"
 
@@ -9,10 +9,12 @@
 #include <finbook/model/deform_controller.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/inbetween/inbetween_commands.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
 #include <finbook/model/skeleton/skeleton_setup.h>
 
+#include <QPainter>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -144,6 +146,7 @@ private slots:
     void joinEditsUndoAndRedoExactly();
     void inbetweensMoveThePartWithItsParent();
     void randomCharacterEditsUndoExactly();
+    void aPictureArmJoinsADrawnTorso();
 };
 
 void TestSkeletonJoin::overlappingArmJoinsTheTorso()
@@ -562,6 +565,80 @@ void TestSkeletonJoin::randomCharacterEditsUndoExactly()
         qInfo("%s: %d", text, applied[QString::fromLatin1(text)]);
         QVERIFY2(applied[QString::fromLatin1(text)] > 20, text);
     }
+}
+
+void TestSkeletonJoin::aPictureArmJoinsADrawnTorso()
+{
+    // The arm is a painted picture (an opaque striped bar) over the drawn torso's upper end.
+    Document doc;
+    Frame f;
+    f.id = doc.allocateId();
+    f.groups.push_back(bar(doc, QStringLiteral("torso"), {300, 100}, {300, 500}, 40));
+    QImage painted(296, 30, QImage::Format_ARGB32_Premultiplied);
+    {
+        QPainter p(&painted);
+        for (int x = 0; x < painted.width(); x += 8) {
+            p.fillRect(QRectF(x, 0, 4, 30), QColor(230, 120, 40));
+            p.fillRect(QRectF(x + 4, 0, 4, 30), QColor(40, 60, 200));
+        }
+    }
+    auto arm = makePictureObject(PictureLayer{QStringLiteral("arm"), painted, {}}, {305, 145});
+    QVERIFY(arm.hasValue());
+    arm->id = doc.allocateId();
+    f.groups.push_back(*arm);
+    const Character c{f.groups[0].id, f.groups[1].id};
+    doc.reset({f}, DocumentSettings{}, doc.nextId());
+    for (Id id : {c.torso, c.arm}) {
+        auto rig = buildSkeletonRig(*doc.group(id));
+        QVERIFY2(rig.hasValue(), qPrintable(rig ? QString() : rig.error()));
+        doc.undoStack()->push(new BuildSkeletonCommand(&doc, id, *rig));
+    }
+    const auto join = proposeJoin(doc.frames()[0], c.arm);
+    QVERIFY(join.has_value());
+    doc.undoStack()->push(new JoinPartCommand(&doc, c.arm, *join));
+    QVERIFY(doc.group(c.arm)->rig.skeleton.hangs());
+    DeformController controller(&doc);
+    QVERIFY(prepared(controller, doc, c));
+    // Posing the torso turns the picture with it about the torso's root.
+    const SkeletonRig torso = doc.group(c.torso)->rig.skeleton;
+    const QPointF pivot = torso.joints[std::size_t(torso.root)];
+    const double theta = 0.3;
+    poseRoot(doc, c.torso, theta, {}, 1);
+    QVERIFY(waitSolved(controller, doc, c.arm));
+    controller.settle();
+    const StrokeGroup &shown = *doc.group(c.arm);
+    QVERIFY(shown.isDeformed());
+    const Eigen::MatrixX2d rest = shown.picture->restVertices();
+    const Eigen::MatrixX2d posed = shownPictureVertices(shown);
+    QCOMPARE(posed.rows(), rest.rows());
+    int checked = 0;
+    for (Eigen::Index i = 0; i < rest.rows(); ++i) {
+        if (rest(i, 0) < 560)
+            continue; // near the tip only
+        const double a0 = std::atan2(rest(i, 1) - pivot.y(), rest(i, 0) - pivot.x());
+        const double a1 = std::atan2(posed(i, 1) - pivot.y(), posed(i, 0) - pivot.x());
+        QVERIFY2(std::abs(std::remainder(a1 - a0 - theta, 2 * std::numbers::pi)) < 1e-3,
+                 qPrintable(QString::number(a1 - a0)));
+        ++checked;
+    }
+    QVERIFY(checked > 5);
+    // Apply Pose from the picture bakes the whole character in one step: the picture is
+    // resampled where it shows, the torso's strokes are its posed strokes; undo restores both.
+    const auto before = shown.picture;
+    const QRectF shownBounds = shownPictureBounds(shown);
+    const std::vector<Rig> rigs = rigsOf(doc);
+    doc.undoStack()->push(makeApplyPoseCommand(&doc, c.arm));
+    const StrokeGroup &baked = *doc.group(c.arm);
+    QVERIFY(baked.picture != before);
+    QVERIFY(!baked.rig.skeleton.isPosed() && !doc.group(c.torso)->rig.skeleton.isPosed());
+    QVERIFY(baked.rig.skeleton.hangs());
+    const QRectF bakedBounds = baked.picture->restRect();
+    QVERIFY2(std::abs(bakedBounds.left() - shownBounds.left()) <= 1.0 &&
+                 std::abs(bakedBounds.bottom() - shownBounds.bottom()) <= 1.0,
+             qPrintable(QStringLiteral("%1 %2").arg(bakedBounds.left()).arg(shownBounds.left())));
+    doc.undoStack()->undo();
+    QVERIFY(doc.group(c.arm)->picture == before);
+    QCOMPARE(rigsOf(doc), rigs);
 }
 
 QTEST_GUILESS_MAIN(TestSkeletonJoin)
