@@ -819,27 +819,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="116"/>
+        <location filename="../model/src/deform_setup.cpp" line="127"/>
         <source>The object has no strokes to deform.</source>
         <translation>Das Objekt hat keine Striche, die sich verformen ließen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="123"/>
+        <location filename="../model/src/deform_setup.cpp" line="134"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Für diese Zeichnung lässt sich kein Verformungsnetz erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="155"/>
+        <location filename="../model/src/deform_setup.cpp" line="166"/>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="206"/>
+        <location filename="../model/src/deform_setup.cpp" line="217"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>Der Käfig wurde geändert, während er vorbereitet wurde.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="214"/>
+        <location filename="../model/src/deform_setup.cpp" line="225"/>
         <source>The object has no mesh to deform.</source>
         <translation>Das Objekt hat kein Netz, das sich verformen ließe.</translation>
     </message>
@@ -854,7 +854,7 @@
         <translation>Die Pins konnten nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="237"/>
+        <location filename="../model/src/deform_setup.cpp" line="248"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>Die Verformung hat ungültige Punkte ergeben; sie wurde nicht angewendet.</translation>
     </message>
@@ -1239,7 +1239,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="148"/>
+        <location filename="../model/src/export/export_obj.cpp" line="187"/>
         <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
         <translation>„%1“ würde von seiner eigenen Materialdatei überschrieben; geben Sie einen Dateinamen an, der auf .obj endet.</translation>
     </message>
@@ -1252,7 +1252,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_glb.cpp" line="45"/>
+        <location filename="../model/src/export/export_glb.cpp" line="48"/>
         <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
         <translation>Einzelbild %1 ergibt ein 3D-Modell, das größer ist, als eine glTF-Datei fassen kann (4 GiB); exportieren Sie es stattdessen als OBJ.</translation>
     </message>
@@ -1267,17 +1267,17 @@
         <translation>Die Referenz „%1“ wird weggelassen: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="613"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="723"/>
         <source>the zip container failed</source>
         <translation>der ZIP-Container ließ sich nicht schreiben</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="739"/>
         <source>Lottie has no place for the reference picture; it is left out.</source>
         <translation>Lottie kann das Referenzbild nicht aufnehmen; es wird weggelassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="631"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="741"/>
         <source>Lottie carries no sound; the soundtrack is left out.</source>
         <translation>Lottie enthält keinen Ton; die Tonspur wird weggelassen.</translation>
     </message>
@@ -2925,7 +2925,7 @@
     </message>
     <message>
         <location filename="../model/src/picture/picture_object.cpp" line="48"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="236"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="267"/>
         <source>There is not enough memory for the picture.</source>
         <translation>Für das Bild ist nicht genug Speicher da.</translation>
     </message>
@@ -2950,12 +2950,12 @@
         <translation>Der Umriss des Bildes lässt sich nicht vernetzen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="218"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="249"/>
         <source>The object has no picture.</source>
         <translation>Das Objekt hat kein Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="229"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="260"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>Das posierte Bild ist zu groß, um es zu behalten (höchstens %1 Pixel breit und hoch).</translation>
     </message>
@@ -3990,37 +3990,42 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="22"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="26"/>
         <source>&amp;Reset Pose</source>
         <translation>Pose &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="26"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="30"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung &amp;anwenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="25"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="29"/>
         <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
         <translation>Die Pins, Käfigecken oder Knochen des aktuellen Objekts in ihre Ruhepositionen zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="28"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="32"/>
         <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
         <translation>Die posierte Zeichnung zu den neuen Strichen des Objekts machen; die Pins, der Käfig oder das Skelett bleiben, wo sie sind</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="30"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="34"/>
         <source>Remo&amp;ve Rig</source>
         <translation>Rig &amp;entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="33"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="37"/>
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>Die Pins, den Käfig oder das Skelett vom aktuellen Objekt entfernen</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location filename="../ui/src/rig/deform_actions.cpp" line="57"/>
+        <source>The posed picture is now the object&apos;s picture: resampled once, it is a little softer. Undo brings back the original.</source>
+        <translation>Das gestellte Bild ist jetzt das Bild des Objekts: einmal neu abgetastet, ist es etwas weicher. Rückgängig bringt das Original zurück.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/rig/deform_actions.cpp" line="74"/>
         <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
         <translation>
             <numerusform>Die Pins falten die Zeichnung: %n Dreieck ihres Netzes ist umgeklappt, wo die Pins keinen Platz lassen (Ansicht → Netz anzeigen zeigt es rot)</numerusform>
@@ -4028,42 +4033,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="62"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="79"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="72"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="89"/>
         <source>R&amp;igidity</source>
         <translation>&amp;Steifigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="103"/>
         <source>Converged (Most Rigid)</source>
         <translation>Konvergiert (am starrsten)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="104"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Wie in der Veröffentlichung (zwei Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="105"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Steifer (+1 Durchgang)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="89"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="106"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Am steifsten (+3 Durchgänge)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="139"/>
         <source>Mesh density </source>
         <translation>Netzdichte </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="123"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="140"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Wie fein das Verformungsnetz des aktuellen Objekts ist (1 = Standard)</translation>
     </message>
@@ -5148,7 +5153,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window.cpp" line="354"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="435"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="436"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -5224,32 +5229,32 @@
         <translation>Netz importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="361"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="373"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="386"/>
         <source>Reading &quot;%1&quot;...</source>
         <translation>„%1“ wird gelesen …</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="344"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="362"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="357"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="373"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="386"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Import Picture</source>
         <translation>Bild importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="374"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="337"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="375"/>
         <source>Cannot Import Picture</source>
         <translation>Bild kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="345"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="358"/>
         <source>&quot;%1&quot; stands on a flat background (%2). Make that colour transparent, so that the object is only what is drawn on it?</source>
         <translation>„%1“ steht auf einem einfarbigen Hintergrund (%2). Diese Farbe durchsichtig machen, damit das Objekt nur aus dem besteht, was darauf gezeichnet ist?</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="387"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="388"/>
         <source>Imported &quot;%1&quot;: %n picture object(s).</source>
         <translation>
             <numerusform>„%1“ importiert: %n Bildobjekt.</numerusform>
@@ -5257,57 +5262,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="397"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="398"/>
         <source>Pasted picture</source>
         <translation>Eingefügtes Bild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
         <source>Reading the pasted picture...</source>
         <translation>Das eingefügte Bild wird gelesen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="411"/>
         <source>Pasted a picture as an object.</source>
         <translation>Ein Bild wurde als Objekt eingefügt.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="423"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="424"/>
         <source>Damaged File</source>
         <translation>Beschädigte Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="424"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="425"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>„Trotzdem öffnen“ zeigt den noch lesbaren Inhalt als neue, ungespeicherte Animation an; die beschädigte Datei wird nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="427"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="428"/>
         <source>Open Anyway</source>
         <translation>Trotzdem öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="437"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="438"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="438"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="439"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>„%1“ hat ungespeicherte Änderungen. Vorher speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="444"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="445"/>
         <source>Open Animation</source>
         <translation>Animation öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="450"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="451"/>
         <source>Save Animation</source>
         <translation>Animation speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="451"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="452"/>
         <source>untitled.finbook</source>
         <translation>unbenannt.finbook</translation>
     </message>
@@ -5412,7 +5417,7 @@
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>Paste</source>
         <translation>Einfügen</translation>

@@ -819,27 +819,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="116"/>
+        <location filename="../model/src/deform_setup.cpp" line="127"/>
         <source>The object has no strokes to deform.</source>
         <translation>L&apos;objet n&apos;a aucun trait à déformer.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="123"/>
+        <location filename="../model/src/deform_setup.cpp" line="134"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Impossible de mailler ce dessin pour le déformer&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="155"/>
+        <location filename="../model/src/deform_setup.cpp" line="166"/>
         <source>Cancelled.</source>
         <translation>Annulé.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="206"/>
+        <location filename="../model/src/deform_setup.cpp" line="217"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>La cage a changé pendant sa préparation.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="214"/>
+        <location filename="../model/src/deform_setup.cpp" line="225"/>
         <source>The object has no mesh to deform.</source>
         <translation>L&apos;objet n&apos;a pas de maillage à déformer.</translation>
     </message>
@@ -854,7 +854,7 @@
         <translation>Le calcul de la déformation par les épingles a échoué&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="237"/>
+        <location filename="../model/src/deform_setup.cpp" line="248"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>La déformation a produit des points invalides&#xa0;; elle n&apos;a pas été appliquée.</translation>
     </message>
@@ -1239,7 +1239,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="148"/>
+        <location filename="../model/src/export/export_obj.cpp" line="187"/>
         <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
         <translation>« %1 » serait écrasé par son propre fichier de matériaux ; donnez un nom de fichier terminé par .obj.</translation>
     </message>
@@ -1252,7 +1252,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_glb.cpp" line="45"/>
+        <location filename="../model/src/export/export_glb.cpp" line="48"/>
         <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
         <translation>L&apos;image %1 donne un modèle 3D plus grand que ce qu&apos;un fichier glTF peut contenir (4 Gio) ; exportez-la plutôt en OBJ.</translation>
     </message>
@@ -1267,17 +1267,17 @@
         <translation>La référence « %1 » est omise : %2</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="613"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="723"/>
         <source>the zip container failed</source>
         <translation>le conteneur zip n&apos;a pas pu être écrit</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="739"/>
         <source>Lottie has no place for the reference picture; it is left out.</source>
         <translation>Lottie ne peut pas contenir l&apos;image de référence ; elle est laissée de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="631"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="741"/>
         <source>Lottie carries no sound; the soundtrack is left out.</source>
         <translation>Lottie ne contient pas de son ; la bande son est laissée de côté.</translation>
     </message>
@@ -2925,7 +2925,7 @@
     </message>
     <message>
         <location filename="../model/src/picture/picture_object.cpp" line="48"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="236"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="267"/>
         <source>There is not enough memory for the picture.</source>
         <translation>Il n’y a pas assez de mémoire pour l’image.</translation>
     </message>
@@ -2950,12 +2950,12 @@
         <translation>Le contour de l’image ne peut pas être maillé : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="218"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="249"/>
         <source>The object has no picture.</source>
         <translation>L’objet n’a pas d’image.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="229"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="260"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>L’image posée est trop grande pour être gardée (au plus %1 pixels de large et de haut).</translation>
     </message>
@@ -3990,37 +3990,42 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="22"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="26"/>
         <source>&amp;Reset Pose</source>
         <translation>&amp;Réinitialiser la pose</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="26"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="30"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>&amp;Appliquer la pose au dessin</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="25"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="29"/>
         <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
         <translation>Ramener les épingles, les coins de cage ou les os de l&apos;objet courant à leur position de repos</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="28"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="32"/>
         <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
         <translation>Faire du dessin posé les nouveaux traits de l&apos;objet&#xa0;; les épingles, la cage ou le squelette restent en place</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="30"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="34"/>
         <source>Remo&amp;ve Rig</source>
         <translation>Re&amp;tirer l&apos;armature</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="33"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="37"/>
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>Retirer les épingles, la cage ou le squelette de l&apos;objet courant</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location filename="../ui/src/rig/deform_actions.cpp" line="57"/>
+        <source>The posed picture is now the object&apos;s picture: resampled once, it is a little softer. Undo brings back the original.</source>
+        <translation>L’image posée est désormais l’image de l’objet : rééchantillonnée une fois, elle est un peu plus douce. Annuler rend l’original.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/rig/deform_actions.cpp" line="74"/>
         <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
         <translation>
             <numerusform>Les épingles plient le dessin&#xa0;: %n triangle de son maillage est retourné là où elles ne laissent pas de place (Affichage → Afficher le maillage le montre en rouge)</numerusform>
@@ -4028,42 +4033,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="62"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="79"/>
         <source>Preparing the deformation…</source>
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="72"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="89"/>
         <source>R&amp;igidity</source>
         <translation>R&amp;igidité</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="103"/>
         <source>Converged (Most Rigid)</source>
         <translation>Convergence (rigidité maximale)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="104"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Comme dans l&apos;article (deux étapes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="105"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Plus rigide (+1 passe)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="89"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="106"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Le plus rigide (+3 passes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="139"/>
         <source>Mesh density </source>
         <translation>Densité du maillage </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="123"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="140"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Finesse du maillage de déformation de l&apos;objet courant (1 = par défaut)</translation>
     </message>
@@ -5148,7 +5153,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window.cpp" line="354"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="435"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="436"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
@@ -5244,32 +5249,32 @@
         <translation>Importer un maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="361"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="373"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="386"/>
         <source>Reading &quot;%1&quot;...</source>
         <translation>Lecture de « %1 »…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="344"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="362"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="357"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="373"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="386"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Import Picture</source>
         <translation>Importer une image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="374"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="337"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="375"/>
         <source>Cannot Import Picture</source>
         <translation>Impossible d’importer l’image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="345"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="358"/>
         <source>&quot;%1&quot; stands on a flat background (%2). Make that colour transparent, so that the object is only what is drawn on it?</source>
         <translation>« %1 » repose sur un fond uni (%2). Rendre cette couleur transparente, pour que l’objet ne soit que ce qui est dessiné dessus ?</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="387"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="388"/>
         <source>Imported &quot;%1&quot;: %n picture object(s).</source>
         <translation>
             <numerusform>« %1 » importé : %n objet image.</numerusform>
@@ -5277,57 +5282,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="397"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="398"/>
         <source>Pasted picture</source>
         <translation>Image collée</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
         <source>Reading the pasted picture...</source>
         <translation>Lecture de l’image collée...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="411"/>
         <source>Pasted a picture as an object.</source>
         <translation>Une image a été collée comme objet.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="423"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="424"/>
         <source>Damaged File</source>
         <translation>Fichier endommagé</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="424"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="425"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>«&#xa0;Ouvrir quand même&#xa0;» affiche ce qui reste lisible dans une nouvelle animation non enregistrée&#xa0;; le fichier endommagé n&apos;est pas modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="427"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="428"/>
         <source>Open Anyway</source>
         <translation>Ouvrir quand même</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="437"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="438"/>
         <source>Unsaved Changes</source>
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="438"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="439"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>«&#xa0;%1&#xa0;» contient des modifications non enregistrées. Les enregistrer avant de continuer&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="444"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="445"/>
         <source>Open Animation</source>
         <translation>Ouvrir une animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="450"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="451"/>
         <source>Save Animation</source>
         <translation>Enregistrer l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="451"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="452"/>
         <source>untitled.finbook</source>
         <translation>sans-titre.finbook</translation>
     </message>
@@ -5432,7 +5437,7 @@
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>Paste</source>
         <translation>Coller</translation>

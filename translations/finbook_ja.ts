@@ -819,27 +819,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="116"/>
+        <location filename="../model/src/deform_setup.cpp" line="127"/>
         <source>The object has no strokes to deform.</source>
         <translation>このオブジェクトには変形できるストロークがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="123"/>
+        <location filename="../model/src/deform_setup.cpp" line="134"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>この絵から変形用のメッシュを作成できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="155"/>
+        <location filename="../model/src/deform_setup.cpp" line="166"/>
         <source>Cancelled.</source>
         <translation>キャンセルしました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="206"/>
+        <location filename="../model/src/deform_setup.cpp" line="217"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>準備中にケージが変更されました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="214"/>
+        <location filename="../model/src/deform_setup.cpp" line="225"/>
         <source>The object has no mesh to deform.</source>
         <translation>このオブジェクトには変形できるメッシュがありません。</translation>
     </message>
@@ -854,7 +854,7 @@
         <translation>ピンによる変形を計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="237"/>
+        <location filename="../model/src/deform_setup.cpp" line="248"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>変形によって無効な点が生じたため、適用しませんでした。</translation>
     </message>
@@ -1235,7 +1235,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="148"/>
+        <location filename="../model/src/export/export_obj.cpp" line="187"/>
         <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
         <translation>「%1」は自身のマテリアルファイルで上書きされてしまいます。末尾が .obj のファイル名を指定してください。</translation>
     </message>
@@ -1247,7 +1247,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_glb.cpp" line="45"/>
+        <location filename="../model/src/export/export_glb.cpp" line="48"/>
         <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
         <translation>フレーム %1 の 3D モデルは glTF ファイルに収まる大きさ (4 GiB) を超えます。代わりに OBJ で書き出してください。</translation>
     </message>
@@ -1262,17 +1262,17 @@
         <translation>参照「%1」は省かれます: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="613"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="723"/>
         <source>the zip container failed</source>
         <translation>ZIP コンテナーを書き込めませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="739"/>
         <source>Lottie has no place for the reference picture; it is left out.</source>
         <translation>Lottie には参照画像を入れられないため、省きました。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="631"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="741"/>
         <source>Lottie carries no sound; the soundtrack is left out.</source>
         <translation>Lottie は音声を持てないため、サウンドトラックは省きました。</translation>
     </message>
@@ -2915,7 +2915,7 @@
     </message>
     <message>
         <location filename="../model/src/picture/picture_object.cpp" line="48"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="236"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="267"/>
         <source>There is not enough memory for the picture.</source>
         <translation>画像のためのメモリが足りません。</translation>
     </message>
@@ -2940,12 +2940,12 @@
         <translation>画像の輪郭をメッシュにできません：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="218"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="249"/>
         <source>The object has no picture.</source>
         <translation>オブジェクトに画像がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="229"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="260"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>ポーズをつけた画像が大きすぎて保持できません（幅と高さは最大 %1 ピクセル）。</translation>
     </message>
@@ -3977,79 +3977,84 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="22"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="26"/>
         <source>&amp;Reset Pose</source>
         <translation>ポーズをリセット(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="26"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="30"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>ポーズを絵に適用(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="25"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="29"/>
         <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
         <translation>現在のオブジェクトのピン、ケージの頂点、またはボーンを元の位置に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="28"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="32"/>
         <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
         <translation>ポーズを付けた絵をオブジェクトの新しいストロークにする（ピン、ケージ、スケルトンはその位置のまま）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="30"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="34"/>
         <source>Remo&amp;ve Rig</source>
         <translation>リグを削除(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="33"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="37"/>
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>現在のオブジェクトからピン、ケージ、またはスケルトンを外す</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location filename="../ui/src/rig/deform_actions.cpp" line="57"/>
+        <source>The posed picture is now the object&apos;s picture: resampled once, it is a little softer. Undo brings back the original.</source>
+        <translation>ポーズを付けた画像がオブジェクトの画像になりました。一度だけ再サンプリングしたため、少しぼやけます。元に戻すと元の画像に戻ります。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/rig/deform_actions.cpp" line="74"/>
         <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
         <translation>
             <numerusform>ピンが絵を折り返しています。ピンの間に余地がないため、メッシュの三角形 %n 個が裏返っています（表示 → メッシュを表示 で赤く示されます）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="62"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="79"/>
         <source>Preparing the deformation…</source>
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="72"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="89"/>
         <source>R&amp;igidity</source>
         <translation>剛性(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="103"/>
         <source>Converged (Most Rigid)</source>
         <translation>収束まで（最も硬く）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="104"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>論文どおり（2 段階）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="105"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>より硬く（+1 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="89"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="106"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>最も硬く（+3 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="139"/>
         <source>Mesh density </source>
         <translation>メッシュ密度 </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="123"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="140"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>現在のオブジェクトの変形メッシュの細かさ（1 = 標準）</translation>
     </message>
@@ -5129,7 +5134,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window.cpp" line="354"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="435"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="436"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
@@ -5224,89 +5229,89 @@
         <translation>メッシュのインポート</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="361"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="373"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="386"/>
         <source>Reading &quot;%1&quot;...</source>
         <translation>「%1」を読み込んでいます…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="344"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="362"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="357"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="373"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="386"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Import Picture</source>
         <translation>画像を読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="324"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="374"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="337"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="375"/>
         <source>Cannot Import Picture</source>
         <translation>画像を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="345"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="358"/>
         <source>&quot;%1&quot; stands on a flat background (%2). Make that colour transparent, so that the object is only what is drawn on it?</source>
         <translation>「%1」は単色の背景（%2）の上にあります。この色を透明にして、描かれている部分だけをオブジェクトにしますか？</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="387"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="388"/>
         <source>Imported &quot;%1&quot;: %n picture object(s).</source>
         <translation>
             <numerusform>「%1」を読み込みました：画像オブジェクト %n 個。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="397"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="398"/>
         <source>Pasted picture</source>
         <translation>貼り付けた画像</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
         <source>Reading the pasted picture...</source>
         <translation>貼り付けた画像を読み込んでいます...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="411"/>
         <source>Pasted a picture as an object.</source>
         <translation>画像をオブジェクトとして貼り付けました。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="423"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="424"/>
         <source>Damaged File</source>
         <translation>破損したファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="424"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="425"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>「このまま開く」を選ぶと、まだ読み取れる部分を未保存の新しいアニメーションとして表示します。破損したファイルは変更されません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="427"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="428"/>
         <source>Open Anyway</source>
         <translation>このまま開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="437"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="438"/>
         <source>Unsaved Changes</source>
         <translation>未保存の変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="438"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="439"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>「%1」には保存されていない変更があります。続ける前に保存しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="444"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="445"/>
         <source>Open Animation</source>
         <translation>アニメーションを開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="450"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="451"/>
         <source>Save Animation</source>
         <translation>アニメーションを保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="451"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="452"/>
         <source>untitled.finbook</source>
         <translation>無題.finbook</translation>
     </message>
@@ -5411,7 +5416,7 @@
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="409"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
         <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>Paste</source>
         <translation>貼り付け</translation>

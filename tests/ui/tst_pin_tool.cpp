@@ -3,6 +3,7 @@
 #include "tst_tools_support.h"
 
 #include <finbook/model/finbook_file.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/canvas/mesh_overlay.h>
@@ -40,15 +41,24 @@ struct Fixture {
     PinTool *tool = nullptr;
     Id group = kNoId;
 
-    // An arm of two strokes, or with `solidTile` the tile.
-    explicit Fixture(bool solidTile = false)
+    // An arm of two strokes, or with `solidTile` the tile, or with `picture` a painted arm:
+    // an opaque picture 400 × 40 px at (200, 280).
+    explicit Fixture(bool solidTile = false, bool picture = false)
     {
         Frame f;
         f.id = doc.allocateId();
         StrokeGroup g;
         g.id = doc.allocateId();
         g.name = QStringLiteral("arm");
-        if (solidTile) {
+        if (picture) {
+            QImage painted(400, 40, QImage::Format_ARGB32_Premultiplied);
+            painted.fill(QColor(230, 120, 40));
+            auto made = makePictureObject(PictureLayer{QStringLiteral("arm"), painted, {}},
+                                          QPointF(200, 280));
+            if (made)
+                g = *made;
+            g.id = doc.allocateId();
+        } else if (solidTile) {
             // a solid tile from (300, 200) to (600, 500)
             g.strokes.push_back(
                 {doc.allocateId(), testing::squareOutline({300, 200}, 300, 30, 4.0f)});
@@ -110,6 +120,7 @@ private slots:
     void placingPinsIsNoPose();
     void placingAPinOnAPosedObjectKeepsTheDrawing();
     void pinsHideWhilePlaying();
+    void applyingAPosedPictureSaysItSoftens();
 };
 
 void TestPinTool::addDragRemoveWithUndo()
@@ -379,6 +390,30 @@ void TestPinTool::pinsHideWhilePlaying()
     QVERIFY(!pinShown());
     fx.state.setPlaying(false);
     QVERIFY(pinShown());
+}
+
+void TestPinTool::applyingAPosedPictureSaysItSoftens()
+{
+    for (const bool picture : {false, true}) {
+        Fixture fx(false, picture);
+        QSignalSpy messages(&fx.actions, &DeformActions::messagePosted);
+        QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({210, 300}));
+        QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({590, 300}));
+        QCOMPARE(fx.object().rig.pins.size(), std::size_t(2));
+        QVERIFY(fx.waitReady());
+        fx.drag({590, 300}, {560, 400});
+        QVERIFY(fx.object().isDeformed());
+        const auto before = fx.object().picture;
+        fx.actions.findChild<QAction *>(QStringLiteral("deform.apply"))->trigger();
+        const bool said = std::any_of(messages.begin(), messages.end(), [](const auto &args) {
+            return args.at(0).toString().contains(QStringLiteral("softer"));
+        });
+        // A picture is resampled once, and the window says so; a drawing is not.
+        QCOMPARE(said, picture);
+        QCOMPARE(fx.object().picture != before, picture);
+        fx.doc.undoStack()->undo();
+        QVERIFY(fx.object().picture == before);
+    }
 }
 
 QTEST_MAIN(TestPinTool)

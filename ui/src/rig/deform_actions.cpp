@@ -12,6 +12,10 @@
 #include <QMenu>
 #include <QSettings>
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 namespace finbook::ui {
 
 DeformActions::DeformActions(EditorState *state, QObject *parent)
@@ -38,7 +42,20 @@ DeformActions::DeformActions(EditorState *state, QObject *parent)
     });
     connect(m_bake, &QAction::triggered, this, [this, doc] {
         m_controller.settle(); // what becomes the drawing is the converged pose
+        // A posed picture becomes a new picture, resampled once: the window says so.
+        std::vector<std::pair<model::Id, const void *>> pictures;
+        if (const model::Frame *frame = m_state->currentFrame())
+            for (const model::StrokeGroup &g : frame->groups)
+                if (g.picture)
+                    pictures.emplace_back(g.id, g.picture.get());
         doc->undoStack()->push(model::makeApplyPoseCommand(doc, m_state->currentGroupId()));
+        const bool resampled = std::any_of(pictures.begin(), pictures.end(), [doc](const auto &p) {
+            const model::StrokeGroup *g = doc->group(p.first);
+            return g && g->picture.get() != p.second;
+        });
+        if (resampled)
+            emit messagePosted(tr("The posed picture is now the object's picture: resampled once, "
+                                  "it is a little softer. Undo brings back the original."));
     });
     connect(m_removePins, &QAction::triggered, this, [this, doc] {
         const model::StrokeGroup *g = m_state->currentGroup();
