@@ -173,12 +173,50 @@ public:
     explicit PictureAssets(double scale)
         : m_scale(scale)
     {}
-    double scale() const { return m_scale; }
     // The group's picture as it shows; nullopt when none of it shows or it cannot be drawn.
     std::optional<PictureRef> add(const StrokeGroup &group)
     {
         if (!group.picture || !pictureIsValid(*group.picture))
             return std::nullopt;
+        // The same picture shown the same way again (a still picture in every drawing) is
+        // not drawn and encoded again.
+        const QByteArray seen = showingKey(group);
+        if (const auto known = m_seen.find(seen); known != m_seen.end())
+            return known.value();
+        std::optional<PictureRef> made = draw(group);
+        m_seen.insert(seen, made);
+        return made;
+    }
+    // The assets' entries, comma-separated.
+    const QByteArray &json() const { return m_json; }
+
+private:
+    // What decides how a group's picture shows: its pixels and mesh, its place and its pose.
+    static QByteArray showingKey(const StrokeGroup &group)
+    {
+        const ObjectPicture &picture = *group.picture;
+        QByteArray key;
+        const auto add = [&key](const void *data, std::size_t bytes) {
+            key.append(static_cast<const char *>(data), qsizetype(bytes));
+        };
+        const void *pointers[2] = {picture.data.get(), picture.mesh.get()};
+        add(pointers, sizeof pointers);
+        const qreal place[6] = {picture.place.m11(), picture.place.m12(), picture.place.m21(),
+                                picture.place.m22(), picture.place.dx(),  picture.place.dy()};
+        add(place, sizeof place);
+        if (group.isDeformed()) {
+            const DeformedStrokes &pose = *group.deformed;
+            add(pose.pictureVertices.data(), pose.pictureVertices.size() * sizeof(QPointF));
+            add(pose.pictureLayers.vertices.data(),
+                pose.pictureLayers.vertices.size() * sizeof(QPointF));
+            add(pose.pictureLayers.faces.data(),
+                pose.pictureLayers.faces.size() * sizeof(std::array<int, 3>));
+        }
+        return key;
+    }
+
+    std::optional<PictureRef> draw(const StrokeGroup &group)
+    {
         const QRectF shown = shownPictureBounds(group);
         if (!shown.isValid())
             return std::nullopt;
@@ -211,12 +249,10 @@ public:
         }
         return PictureRef{*id, QPointF(left / m_scale, top / m_scale)};
     }
-    // The assets' entries, comma-separated.
-    const QByteArray &json() const { return m_json; }
 
-private:
     double m_scale;
-    QHash<QByteArray, QByteArray> m_ids; // the PNG's SHA-256, its asset's id
+    QHash<QByteArray, QByteArray> m_ids;                 // the PNG's SHA-256, its asset's id
+    QHash<QByteArray, std::optional<PictureRef>> m_seen; // showingKey, what it drew
     QByteArray m_json;
 };
 
