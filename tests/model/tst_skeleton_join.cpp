@@ -21,6 +21,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 
 using namespace finbook;
 using namespace finbook::model;
@@ -97,6 +98,20 @@ void poseRoot(Document &doc, Id id, double angle, QPointF offset, int serial)
     std::vector<double> angles(std::size_t(doc.group(id)->rig.skeleton.jointCount()), 0.0);
     angles[std::size_t(doc.group(id)->rig.skeleton.root)] = angle;
     doc.undoStack()->push(new PoseBonesCommand(&doc, id, angles, offset, serial));
+}
+
+// Turns the torso by `theta` about its root and waits until the arm follows; the root, or
+// nullopt when the arm's pose never came.
+std::optional<QPointF> turnTorso(Document &doc, DeformController &controller, const Character &c,
+                                 double theta)
+{
+    const SkeletonRig torso = doc.group(c.torso)->rig.skeleton;
+    const QPointF pivot = torso.joints[std::size_t(torso.root)];
+    poseRoot(doc, c.torso, theta, {}, 1);
+    if (!waitSolved(controller, doc, c.arm))
+        return std::nullopt;
+    controller.settle();
+    return pivot;
 }
 
 double distance(const std::vector<QPointF> &a, const std::vector<QPointF> &b)
@@ -213,12 +228,10 @@ void TestSkeletonJoin::posedArmFollowsThroughTheController()
     DeformController controller(&doc);
     const Character c = joinedCharacter(doc);
     QVERIFY(prepared(controller, doc, c));
-    const SkeletonRig torso = doc.group(c.torso)->rig.skeleton;
-    const QPointF pivot = torso.joints[std::size_t(torso.root)];
     const double theta = 0.3;
-    poseRoot(doc, c.torso, theta, {}, 1);
-    QVERIFY(waitSolved(controller, doc, c.arm));
-    controller.settle();
+    const auto turned = turnTorso(doc, controller, c, theta);
+    QVERIFY(turned);
+    const QPointF pivot = *turned;
     // The arm's far end turns by θ about the torso's root, like the torso itself.
     const StrokeGroup &arm = *doc.group(c.arm);
     QVERIFY(arm.isDeformed());
@@ -600,12 +613,10 @@ void TestSkeletonJoin::aPictureArmJoinsADrawnTorso()
     DeformController controller(&doc);
     QVERIFY(prepared(controller, doc, c));
     // Posing the torso turns the picture with it about the torso's root.
-    const SkeletonRig torso = doc.group(c.torso)->rig.skeleton;
-    const QPointF pivot = torso.joints[std::size_t(torso.root)];
     const double theta = 0.3;
-    poseRoot(doc, c.torso, theta, {}, 1);
-    QVERIFY(waitSolved(controller, doc, c.arm));
-    controller.settle();
+    const auto turned = turnTorso(doc, controller, c, theta);
+    QVERIFY(turned);
+    const QPointF pivot = *turned;
     const StrokeGroup &shown = *doc.group(c.arm);
     QVERIFY(shown.isDeformed());
     const Eigen::MatrixX2d rest = shown.picture->restVertices();
