@@ -51,13 +51,10 @@ struct Character {
     Id arm = kNoId;
 };
 
-// A tall torso and an arm drawn over its upper end, each with its automatic skeleton.
-Character makeCharacter(Document &doc)
+// The document holding `f` alone (its torso first, its arm second), each part with its
+// automatic skeleton.
+Character riggedCharacter(Document &doc, const Frame &f)
 {
-    Frame f;
-    f.id = doc.allocateId();
-    f.groups.push_back(bar(doc, QStringLiteral("torso"), {300, 100}, {300, 500}, 40));
-    f.groups.push_back(bar(doc, QStringLiteral("arm"), {305, 160}, {600, 160}, 30));
     const Character c{f.groups[0].id, f.groups[1].id};
     doc.reset({f}, DocumentSettings{}, doc.nextId());
     for (Id id : {c.torso, c.arm}) {
@@ -67,6 +64,16 @@ Character makeCharacter(Document &doc)
         doc.undoStack()->push(new BuildSkeletonCommand(&doc, id, rig ? *rig : SkeletonRig{}));
     }
     return c;
+}
+
+// A tall torso and an arm drawn over its upper end, each with its automatic skeleton.
+Character makeCharacter(Document &doc)
+{
+    Frame f;
+    f.id = doc.allocateId();
+    f.groups.push_back(bar(doc, QStringLiteral("torso"), {300, 100}, {300, 500}, 40));
+    f.groups.push_back(bar(doc, QStringLiteral("arm"), {305, 160}, {600, 160}, 30));
+    return riggedCharacter(doc, f);
 }
 
 bool waitSolved(DeformController &controller, const Document &doc, Id groupId)
@@ -133,13 +140,18 @@ std::vector<Rig> rigsOf(const Document &doc)
     return rigs;
 }
 
-Character joinedCharacter(Document &doc)
+// The arm hung from the torso where it overlaps it best.
+Character joined(Document &doc, const Character &c)
 {
-    const Character c = makeCharacter(doc);
     const auto join = proposeJoin(doc.frames()[0], c.arm);
     if (join)
         doc.undoStack()->push(new JoinPartCommand(&doc, c.arm, *join));
     return c;
+}
+
+Character joinedCharacter(Document &doc)
+{
+    return joined(doc, makeCharacter(doc));
 }
 
 } // namespace
@@ -599,16 +611,9 @@ void TestSkeletonJoin::aPictureArmJoinsADrawnTorso()
     QVERIFY(arm.hasValue());
     arm->id = doc.allocateId();
     f.groups.push_back(*arm);
-    const Character c{f.groups[0].id, f.groups[1].id};
-    doc.reset({f}, DocumentSettings{}, doc.nextId());
-    for (Id id : {c.torso, c.arm}) {
-        auto rig = buildSkeletonRig(*doc.group(id));
-        QVERIFY2(rig.hasValue(), qPrintable(rig ? QString() : rig.error()));
-        doc.undoStack()->push(new BuildSkeletonCommand(&doc, id, *rig));
-    }
-    const auto join = proposeJoin(doc.frames()[0], c.arm);
-    QVERIFY(join.has_value());
-    doc.undoStack()->push(new JoinPartCommand(&doc, c.arm, *join));
+    const Character c = joined(doc, riggedCharacter(doc, f));
+    QCOMPARE(doc.group(c.torso)->rig.kind(), RigKind::Skeleton);
+    QCOMPARE(doc.group(c.arm)->rig.kind(), RigKind::Skeleton); // the picture's own skeleton
     QVERIFY(doc.group(c.arm)->rig.skeleton.hangs());
     DeformController controller(&doc);
     QVERIFY(prepared(controller, doc, c));

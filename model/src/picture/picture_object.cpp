@@ -233,13 +233,22 @@ ShownPictureMesh shownPictureMesh(const StrokeGroup &group)
     return shown;
 }
 
-QRectF shownPictureBounds(const StrokeGroup &group)
+namespace {
+
+// The bounding box of the vertices (canvas px); empty without any or with a non-finite one.
+QRectF boundsOf(const Eigen::MatrixX2d &V)
 {
-    const Eigen::MatrixX2d V = shownPictureMesh(group).V;
     if (V.rows() == 0 || !V.allFinite())
         return {};
     const Eigen::RowVector2d lo = V.colwise().minCoeff(), hi = V.colwise().maxCoeff();
     return QRectF(QPointF(lo.x(), lo.y()), QPointF(hi.x(), hi.y()));
+}
+
+} // namespace
+
+QRectF shownPictureBounds(const StrokeGroup &group)
+{
+    return boundsOf(shownPictureMesh(group).V);
 }
 
 Expected<std::shared_ptr<const ObjectPicture>, QString> bakedPicture(const StrokeGroup &group)
@@ -272,10 +281,9 @@ Expected<std::shared_ptr<const ObjectPicture>, QString> bakedPicture(const Strok
 
 bool pictureShowsAt(const StrokeGroup &group, QPointF pos)
 {
-    if (!group.picture || !pictureIsValid(*group.picture) ||
-        !shownPictureBounds(group).contains(pos))
+    const ShownPictureMesh mesh = shownPictureMesh(group); // empty without a valid picture
+    if (!boundsOf(mesh.V).contains(pos))
         return false;
-    const ShownPictureMesh mesh = shownPictureMesh(group);
     const Eigen::MatrixX2d &V = mesh.V;
     const Eigen::MatrixX3i &F = mesh.F;
     const auto cross = [](double ax, double ay, double bx, double by) { return ax * by - ay * bx; };
@@ -335,14 +343,14 @@ namespace {
 QImage scratchPicture(const StrokeGroup &group, const QTransform &view, QSize size,
                       const std::optional<QColor> &tint, QRect &box)
 {
-    box = shownOn(shownPictureBounds(group), view, size);
+    const ShownPictureMesh mesh = shownPictureMesh(group);
+    box = shownOn(boundsOf(mesh.V), view, size);
     if (box.isEmpty())
         return {};
     QImage scratch(box.size(), QImage::Format_ARGB32_Premultiplied);
     if (scratch.isNull())
         return {};
     scratch.fill(Qt::transparent);
-    const ShownPictureMesh mesh = shownPictureMesh(group);
     drawTexturedMesh(scratch, view * QTransform::fromTranslate(-box.left(), -box.top()),
                      group.picture->data->image, mesh.uv, mesh.V, mesh.F);
     if (tint)
