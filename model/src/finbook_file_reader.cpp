@@ -429,7 +429,7 @@ void Reader::finish(Cursor &c)
     if (recovering()) {
         // Nothing in the file refers to a layer's id: fresh ones cannot clash.
         for (LoadedLayer &l : m_doc.layers)
-            l.id = ++m_maxId;
+            l.id = freshId();
         if (m_idsClash)
             renumberClashingIds();
         resolveAll();

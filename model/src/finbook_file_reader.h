@@ -8,6 +8,7 @@
 
 #include <finbook/model/picture/picture_object.h>
 
+#include <unordered_set>
 #include <vector>
 
 namespace finbook::model::file_format {
@@ -144,6 +145,7 @@ private:
     // finbook_file_recover.cpp
     bool findNextSection(Cursor &c, std::size_t next);
     void renumberClashingIds();
+    Id freshId();
 
     ParseMode m_mode;
     qint64 m_budget;
@@ -165,6 +167,11 @@ private:
     bool m_huntedSeen = false;
     Id m_maxId = kNoId;
     bool m_idsClash = false; // Recover mode: some ids must be given anew
+    // freshId once the ids reach kMaxId: every id the document holds or refers to, and the
+    // last id given from below.
+    std::unordered_set<Id> m_usedIds;
+    bool m_usedGathered = false;
+    Id m_lowFree = kNoId;
     QStringList m_problems;
 };
 

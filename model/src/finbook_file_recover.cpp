@@ -59,10 +59,56 @@ bool Reader::findNextSection(Cursor &c, std::size_t next)
     return false;
 }
 
+// A new id, within kMaxId, that no id of the document uses or refers to: above the largest while
+// there is room, else the lowest free one (a damaged file may hold an id at the very top).
+Id Reader::freshId()
+{
+    if (m_maxId < kMaxId)
+        return ++m_maxId;
+    if (!std::exchange(m_usedGathered, true)) {
+        const auto use = [this](Id id) { m_usedIds.insert(id); };
+        for (const SwapSet &set : m_doc.swapSets) {
+            use(set.id);
+            for (const SwapDrawing &d : set.drawings) {
+                use(d.id);
+                for (const Stroke &s : d.strokes)
+                    use(s.id);
+                for (const Pin &p : d.rig.pins)
+                    use(p.id);
+            }
+        }
+        for (Frame &f : m_doc.frames) {
+            use(f.id);
+            for (StrokeGroup &g : f.groups) {
+                use(g.id);
+                for (const Stroke &s : g.strokes)
+                    use(s.id);
+                for (const Pin &p : g.rig.pins)
+                    use(p.id);
+                for (Fill &fill : g.fills)
+                    forEachFillStrokes(fill, [&](const std::vector<Id> &ids) {
+                        std::for_each(ids.begin(), ids.end(), use);
+                    });
+                use(g.rig.skeleton.join.parent);
+                use(g.swap.set);
+                use(g.swap.drawing);
+            }
+        }
+        for (const SoundClip &clip : m_doc.sound)
+            use(clip.id);
+        for (const LoadedLayer &l : m_doc.layers)
+            use(l.id);
+    }
+    while (m_usedIds.count(++m_lowFree) > 0) {
+    }
+    m_usedIds.insert(m_lowFree);
+    return m_lowFree;
+}
+
 // Ids that were missing, too large or used twice: each one after the first gets a new id above
-// every good one, in file order, so the document is valid again. The swap sets come first: an
-// object showing one of their drawings is linked to it by the set's and the drawing's ids and
-// holds the drawing's stroke ids, so those follow the drawing rather than count as a clash.
+// every good one (freshId), in file order, so the document is valid again. The swap sets come
+// first: an object showing one of their drawings is linked to it by the set's and the drawing's ids
+// and holds the drawing's stroke ids, so those follow the drawing rather than count as a clash.
 void Reader::renumberClashingIds()
 {
     std::unordered_set<Id> seen;
@@ -70,7 +116,7 @@ void Reader::renumberClashingIds()
     const auto fix = [&](Id &id) {
         if (id != kNoId && id <= kMaxId && seen.insert(id).second)
             return;
-        id = ++m_maxId;
+        id = freshId();
         seen.insert(id);
         ++renumbered;
     };

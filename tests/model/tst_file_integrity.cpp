@@ -5,6 +5,8 @@
 
 #include <QRandomGenerator>
 
+#include <set>
+
 using namespace finbook::model;
 using namespace file_test;
 
@@ -52,6 +54,7 @@ private slots:
     void recoverSkipsBadRecords();
     void recoverFindsSectionsAfterDamagedHeader();
     void recoverRepairsIds();
+    void recoverGivesNewIdsWhenTheFileUsesTheLargest();
     void recoverNeverCrashesAndGivesValidDocuments();
     void ancillarySectionsAreSkippedAndReadable();
 };
@@ -290,6 +293,49 @@ void TestFileIntegrity::recoverRepairsIds()
              qPrintable(problems.join('|')));
     QVERIFY(recovered->frames[1].groups[0].id <= kMaxId);
     QVERIFY(recovered->frames[2].groups[1].strokes[0].id != recovered->frames[0].id);
+    QVERIFY(recovered->nextId <= kMaxId + 1);
+    QVERIFY(savesAndReopens(*recovered));
+}
+
+void TestFileIntegrity::recoverGivesNewIdsWhenTheFileUsesTheLargest()
+{
+    // A damaged file whose object holds the largest id there is (found by finbook-fuzz): the
+    // ids recovery gives (a repeated one, the layers') cannot go above it, so they come from
+    // below, unused, and the recovered document saves and opens again.
+    Document doc;
+    buildSample(doc);
+    std::vector<Frame> frames = doc.frames();
+    frames[0].groups[0].id = kMaxId;
+    frames[2].groups[1].strokes[0].id = frames[0].id; // used twice
+    Document bad;
+    bad.reset(std::move(frames), doc.settings(), kMaxId + 1);
+    const QByteArray bytes = serializeFinbook(bad);
+    QCOMPARE(errorOf(bytes), FileErrorCode::BadValue);
+    QStringList problems;
+    auto recovered = recoverFinbook(bytes, &problems);
+    QVERIFY(recovered);
+    QCOMPARE(recovered->frames[0].groups[0].id, kMaxId);
+    std::set<Id> ids;
+    std::size_t count = 0;
+    for (const Frame &f : recovered->frames) {
+        ids.insert(f.id);
+        ++count;
+        for (const StrokeGroup &g : f.groups) {
+            ids.insert(g.id);
+            ++count;
+            for (const Stroke &st : g.strokes) {
+                ids.insert(st.id);
+                ++count;
+            }
+        }
+    }
+    for (const LoadedLayer &l : recovered->layers) {
+        QVERIFY(l.id != kNoId && l.id <= kMaxId);
+        ids.insert(l.id);
+        ++count;
+    }
+    QCOMPARE(ids.size(), count); // all different
+    QVERIFY(*ids.rbegin() <= kMaxId);
     QVERIFY(recovered->nextId <= kMaxId + 1);
     QVERIFY(savesAndReopens(*recovered));
 }
