@@ -5,6 +5,7 @@
 // target), and the previous file is kept as "<path>~" just before the rename.
 #include "command_text.h"
 #include "finbook_file_cursor.h"
+#include "finbook_file_ids.h"
 
 #include <finbook/model/io/atomic_file.h>
 #include <finbook/model/reference/reference_layer.h>
@@ -214,9 +215,15 @@ std::vector<Layer> takeLoadedLayers(LoadedDocument &loaded)
     std::vector<Layer> layers;
     if (loaded.layers.empty()) {
         Layer only;
-        only.id = std::max<Id>(loaded.nextId, 1);
+        if (loaded.nextId <= kMaxId) {
+            only.id = std::max<Id>(loaded.nextId, 1);
+            loaded.nextId = only.id + 1;
+        } else { // the ids reach the largest there is: the lowest one free
+            std::unordered_set<Id> used = idsIn(loaded);
+            Id below = kNoId;
+            only.id = lowestFreeId(used, below);
+        }
         only.properties.name = Command::tr("Layer 1"); // a file from before layers
-        loaded.nextId = only.id + 1;
         only.cels = std::move(loaded.frames);
         layers.push_back(std::move(only));
         return layers;

@@ -1,10 +1,12 @@
 // What only "open anyway" does: find the next section that reads after damage, and give new
 // ids to what lost its own. Also reading one ancillary section without parsing the rest.
+#include "finbook_file_ids.h"
 #include "finbook_file_reader.h"
 #include "io/crc32c.h"
 
 #include <algorithm>
 #include <unordered_set>
+#include <utility>
 
 namespace finbook::model {
 
@@ -65,44 +67,9 @@ Id Reader::freshId()
 {
     if (m_maxId < kMaxId)
         return ++m_maxId;
-    if (!std::exchange(m_usedGathered, true)) {
-        const auto use = [this](Id id) { m_usedIds.insert(id); };
-        for (const SwapSet &set : m_doc.swapSets) {
-            use(set.id);
-            for (const SwapDrawing &d : set.drawings) {
-                use(d.id);
-                for (const Stroke &s : d.strokes)
-                    use(s.id);
-                for (const Pin &p : d.rig.pins)
-                    use(p.id);
-            }
-        }
-        for (Frame &f : m_doc.frames) {
-            use(f.id);
-            for (StrokeGroup &g : f.groups) {
-                use(g.id);
-                for (const Stroke &s : g.strokes)
-                    use(s.id);
-                for (const Pin &p : g.rig.pins)
-                    use(p.id);
-                for (Fill &fill : g.fills)
-                    forEachFillStrokes(fill, [&](const std::vector<Id> &ids) {
-                        std::for_each(ids.begin(), ids.end(), use);
-                    });
-                use(g.rig.skeleton.join.parent);
-                use(g.swap.set);
-                use(g.swap.drawing);
-            }
-        }
-        for (const SoundClip &clip : m_doc.sound)
-            use(clip.id);
-        for (const LoadedLayer &l : m_doc.layers)
-            use(l.id);
-    }
-    while (m_usedIds.count(++m_lowFree) > 0) {
-    }
-    m_usedIds.insert(m_lowFree);
-    return m_lowFree;
+    if (!std::exchange(m_usedGathered, true))
+        m_usedIds = idsIn(m_doc);
+    return lowestFreeId(m_usedIds, m_lowFree);
 }
 
 // Ids that were missing, too large or used twice: each one after the first gets a new id above

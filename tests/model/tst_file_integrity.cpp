@@ -338,6 +338,23 @@ void TestFileIntegrity::recoverGivesNewIdsWhenTheFileUsesTheLargest()
     QVERIFY(*ids.rbegin() <= kMaxId);
     QVERIFY(recovered->nextId <= kMaxId + 1);
     QVERIFY(savesAndReopens(*recovered));
+    // A document read without its layer list (a file from before layers, or one whose list
+    // was lost) gets one layer; with the ids used up to the largest, its id comes from below.
+    LoadedDocument old;
+    old.frames = doc.frames();
+    old.frames[0].groups[0].id = kMaxId;
+    old.nextId = kMaxId + 1;
+    Document opened;
+    adoptLoadedDocument(opened, old);
+    QCOMPARE(opened.layers().size(), std::size_t(1));
+    const Id layer = opened.layers().front().id;
+    QVERIFY(layer != kNoId && layer <= kMaxId);
+    for (const Frame &f : opened.frames()) {
+        QVERIFY(f.id != layer);
+        for (const StrokeGroup &g : f.groups)
+            QVERIFY(g.id != layer);
+    }
+    QVERIFY(savesAndReopens(old));
 }
 
 void TestFileIntegrity::recoverNeverCrashesAndGivesValidDocuments()
