@@ -4,8 +4,10 @@
 // ends, gaps closed, regions, the area of the object's shape (objectShape) against the ink
 // band (the strokes' bands alone, nothing filled) and today's silhouette, and the times
 // (median of 7 runs, wall clock, shared machine). A last line sums up (median and max time,
-// how many shapes are at least 3× their ink). --png draws each: faces in colour, strokes
-// black, closures red, free ends as red circles, the shape's outline blue.
+// how many shapes are at least 3× their ink, how many mouths were closed). --png draws each:
+// faces in colour, strokes black, gap closures red, mouths' chords orange, free ends as red
+// circles, the shape's outline blue. --no-mouths: without closing open mouths (regions.h),
+// for comparison.
 #include "../geometry/geometry_test_support.h"
 #include "bench.h"
 
@@ -23,6 +25,7 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -111,9 +114,11 @@ void writePicture(const QString &file, const QString &title,
                    : p.lineTo(s.points(i, 0), s.points(i, 1));
         painter.drawPath(p);
     }
-    painter.setPen(QPen(Qt::red, 2.5 / scale, Qt::DashLine));
-    for (const GapClosure &g : regions.closures)
+    for (const GapClosure &g : regions.closures) {
+        painter.setPen(
+            QPen(g.mouth ? QColor(255, 140, 0) : QColor(Qt::red), 2.5 / scale, Qt::DashLine));
         painter.drawLine(QPointF(g.from.x(), g.from.y()), QPointF(g.to.x(), g.to.y()));
+    }
     painter.setPen(QPen(Qt::red, 1.0 / scale));
     for (const StrokeInput &s : strokes)
         for (Eigen::Index i : {Eigen::Index(0), s.points.rows() - 1})
@@ -128,8 +133,13 @@ double msSince(Clock::time_point start)
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+struct Tally {
+    std::vector<double> times;
+    int filled = 0, mouths = 0;
+};
+
 QJsonObject measure(const QString &path, const std::vector<StrokeInput> &strokes,
-                    const QString &pngDir, double gap, std::vector<double> &times, int &filled)
+                    const QString &pngDir, const RegionsOptions &options, Tally &tally)
 {
     QJsonObject row{{QStringLiteral("file"), QFileInfo(path).fileName()}};
     std::vector<double> regionMs, shapeMs;
@@ -137,10 +147,12 @@ QJsonObject measure(const QString &path, const std::vector<StrokeInput> &strokes
     std::optional<Region> shape;
     for (int run = 0; run < kRuns; ++run) {
         auto start = Clock::now();
-        auto r = computeRegions(strokes, RegionsOptions{gap});
+        auto r = computeRegions(strokes, options);
         regionMs.push_back(msSince(start));
         start = Clock::now();
-        auto s = objectShape(strokes);
+        RegionsOptions forShape;
+        forShape.closeMouths = options.closeMouths;
+        auto s = objectShape(strokes, {}, forShape);
         shapeMs.push_back(msSince(start));
         if (!r || !s) {
             row.insert(QStringLiteral("error"),
@@ -161,7 +173,10 @@ QJsonObject measure(const QString &path, const std::vector<StrokeInput> &strokes
     row.insert(QStringLiteral("strokes"), qint64(strokes.size()));
     row.insert(QStringLiteral("points"), qint64(points));
     row.insert(QStringLiteral("free_ends"), regions->freeEnds);
-    row.insert(QStringLiteral("gaps_closed"), qint64(regions->closures.size()));
+    const int mouths = int(std::count_if(regions->closures.begin(), regions->closures.end(),
+                                         [](const GapClosure &g) { return g.mouth; }));
+    row.insert(QStringLiteral("gaps_closed"), qint64(regions->closures.size()) - mouths);
+    row.insert(QStringLiteral("mouths_closed"), mouths);
     row.insert(QStringLiteral("regions"), qint64(regions->faces.size()));
     row.insert(QStringLiteral("close_gap_px"), regions->closeGap);
     row.insert(QStringLiteral("ink_area"), inkArea);
@@ -170,15 +185,17 @@ QJsonObject measure(const QString &path, const std::vector<StrokeInput> &strokes
     row.insert(QStringLiteral("shape_over_ink"), inkArea > 0.0 ? shapeArea / inkArea : 0.0);
     row.insert(QStringLiteral("regions_ms"), median(regionMs));
     row.insert(QStringLiteral("shape_ms"), median(shapeMs));
-    times.push_back(median(regionMs));
-    filled += shapeArea >= kFilledFactor * inkArea ? 1 : 0;
+    tally.times.push_back(median(regionMs));
+    tally.filled += shapeArea >= kFilledFactor * inkArea ? 1 : 0;
+    tally.mouths += mouths;
     if (!pngDir.isEmpty()) {
-        const QString title = QStringLiteral("%1  ends %2 closed %3 faces %4  x%5")
+        const QString title = QStringLiteral("%1  ends %2 closed %3+%6 faces %4  x%5")
                                   .arg(QFileInfo(path).baseName())
                                   .arg(regions->freeEnds)
-                                  .arg(regions->closures.size())
+                                  .arg(regions->closures.size() - std::size_t(mouths))
                                   .arg(regions->faces.size())
-                                  .arg(inkArea > 0.0 ? shapeArea / inkArea : 0.0, 0, 'f', 1);
+                                  .arg(inkArea > 0.0 ? shapeArea / inkArea : 0.0, 0, 'f', 1)
+                                  .arg(mouths);
         writePicture(QDir(pngDir).filePath(QFileInfo(path).baseName() + QStringLiteral(".png")),
                      title, strokes, *regions, *shape);
     }
@@ -189,46 +206,58 @@ int benchRegions(const QStringList &arguments)
 {
     QStringList args = arguments;
     QString pngDir;
-    double gap = -1.0; // automatic, as the app's default
-    while (args.size() >= 2 && args.front().startsWith(QStringLiteral("--"))) {
+    RegionsOptions options; // automatic gap, mouths closed: as the app's default
+    while (!args.isEmpty() && args.front().startsWith(QStringLiteral("--"))) {
+        if (args.front() == QStringLiteral("--no-mouths")) {
+            options.closeMouths = false;
+            args = args.mid(1);
+            continue;
+        }
+        if (args.size() < 2)
+            break;
         if (args.front() == QStringLiteral("--png")) {
             pngDir = args[1];
             QDir().mkpath(pngDir);
         } else if (args.front() == QStringLiteral("--gap")) {
-            gap = args[1].toDouble();
+            options.closeGap = args[1].toDouble();
         } else {
             break;
         }
         args = args.mid(2);
     }
     if (args.isEmpty()) {
-        std::fprintf(stderr, "usage: finbook-bench regions [--png DIR] [--gap PX] FILE...\n");
+        std::fprintf(stderr,
+                     "usage: finbook-bench regions [--png DIR] [--gap PX] [--no-mouths] FILE...\n");
         return 2;
     }
-    int failures = 0, filled = 0;
-    std::vector<double> times;
+    int failures = 0;
+    Tally tally;
     for (const QString &path : args) {
         const auto strokes = readStrokes(path);
         const QJsonObject row =
-            strokes ? measure(path, *strokes, pngDir, gap, times, filled)
+            strokes ? measure(path, *strokes, pngDir, options, tally)
                     : QJsonObject{{QStringLiteral("file"), QFileInfo(path).fileName()},
                                   {QStringLiteral("error"), QStringLiteral("unreadable")}};
         failures += row.contains(QStringLiteral("error")) ? 1 : 0;
         std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
         std::fflush(stdout);
     }
-    const QJsonObject summary{{QStringLiteral("summary"), true},
-                              {QStringLiteral("files"), qint64(args.size())},
-                              {QStringLiteral("failures"), failures},
-                              {QStringLiteral("regions_ms_median"), finbook::bench::median(times)},
-                              {QStringLiteral("regions_ms_max"),
-                               times.empty() ? 0.0 : *std::max_element(times.begin(), times.end())},
-                              {QStringLiteral("shape_at_least_3x_ink"), filled}};
+    const QJsonObject summary{
+        {QStringLiteral("summary"), true},
+        {QStringLiteral("files"), qint64(args.size())},
+        {QStringLiteral("failures"), failures},
+        {QStringLiteral("regions_ms_median"), finbook::bench::median(tally.times)},
+        {QStringLiteral("regions_ms_max"),
+         tally.times.empty() ? 0.0 : *std::max_element(tally.times.begin(), tally.times.end())},
+        {QStringLiteral("shape_at_least_3x_ink"), tally.filled},
+        {QStringLiteral("mouths_closed"), tally.mouths}};
     std::printf("%s\n", QJsonDocument(summary).toJson(QJsonDocument::Compact).constData());
     return failures == 0 ? 0 : 1;
 }
 
 } // namespace
 
-FINBOOK_BENCH("regions", "[--png DIR] FILE... (Quick, Draw! strokes or shape contours as JSON)",
-              benchRegions);
+FINBOOK_BENCH(
+    "regions",
+    "[--png DIR] [--gap PX] [--no-mouths] FILE... (Quick, Draw! strokes or shape contours as JSON)",
+    benchRegions);

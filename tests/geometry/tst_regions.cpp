@@ -13,6 +13,7 @@
 #include <QJsonObject>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -58,17 +59,24 @@ void checkRegions(const Regions &regions, int strokeCount)
         for (int s : f.strokes)
             QVERIFY(s >= 0 && s < strokeCount);
     }
+    // A gap closure is at most the gap long; one that joins a mouth's two sides, twice that.
+    const bool mouths = std::any_of(regions.closures.begin(), regions.closures.end(),
+                                    [](const GapClosure &g) { return g.mouth; });
     for (const GapClosure &g : regions.closures) {
         QVERIFY(g.from.allFinite() && g.to.allFinite());
-        QVERIFY((g.to - g.from).norm() <= regions.closeGap + 1e-9);
+        QVERIFY(g.mouth ||
+                (g.to - g.from).norm() <= (mouths ? 2.0 : 1.0) * regions.closeGap + 1e-9);
         QVERIFY(g.fromStroke >= 0 && g.fromStroke < strokeCount);
         QVERIFY(g.toStroke >= 0 && g.toStroke < strokeCount);
     }
 }
 
-Regions regionsOf(const std::vector<StrokeInput> &strokes, double closeGap = -1.0)
+Regions regionsOf(const std::vector<StrokeInput> &strokes, double closeGap = -1.0,
+                  bool mouths = true)
 {
-    auto r = computeRegions(strokes, RegionsOptions{closeGap});
+    RegionsOptions options{closeGap};
+    options.closeMouths = mouths;
+    auto r = computeRegions(strokes, options);
     if (!r)
         qWarning("%s", r.error().message.c_str());
     return r ? *r : Regions{};
@@ -105,6 +113,10 @@ private slots:
     void closedGapsEndIsNotClosedAgain();
     void degenerateInput();
     void scribbleIsRefusedQuickly();
+    void mittenOpenAtTheWristIsClosed();
+    void treeOpenAtTheFootIsClosedWithItsCrown();
+    void legsUnderABodyStayLines();
+    void linesSpreadingFromABodyStayLines();
     void objectShapeOfTidyOutlineIsItsSilhouette();
     void objectShapeFillsGapWristedOutline();
     void objectShapeKeepsTheSlitBetweenFingers();
@@ -462,6 +474,88 @@ void TestRegions::scribbleIsRefusedQuickly()
     const auto bands = silhouette(strokes);
     QVERIFY(shape && bands);
     QCOMPARE(regionArea(*shape), regionArea(*bands)); // the ink alone, as before regions
+}
+
+int mouthCount(const Regions &r)
+{
+    return int(std::count_if(r.closures.begin(), r.closures.end(),
+                             [](const GapClosure &g) { return g.mouth; }));
+}
+
+void TestRegions::mittenOpenAtTheWristIsClosed()
+{
+    // A mitten drawn as one line, open at the wrist by 50 px, five times the gap.
+    const Eigen::MatrixX2d outline = polyline(
+        {{0, 150}, {0, 20}, {10, 0}, {40, 0}, {50, 20}, {50, 90}, {70, 70}, {80, 80}, {50, 150}});
+    const Regions r = regionsOf({{outline, 3.0}}, 10.0);
+    checkRegions(r, 1);
+    QCOMPARE(int(r.faces.size()), 1);
+    QCOMPARE(mouthCount(r), 1);
+    QVERIFY((r.closures[0].from - Eigen::Vector2d(0, 150)).norm() < 1e-6 ||
+            (r.closures[0].to - Eigen::Vector2d(0, 150)).norm() < 1e-6);
+    QVERIFY(faceAt(r, 25, 140) >= 0); // just inside the wrist
+    QVERIFY(faceAt(r, 60, 85) >= 0);  // the thumb
+    QVERIFY(r.faces[0].area > 0.95 * (50 * 150 - 2 * 100 + 400));
+    const auto shape = objectShape({{outline, 3.0}}, {}, RegionsOptions{10.0});
+    QVERIFY(shape && regionContains(*shape, 25, 75));
+    // The setting turns it off, as "don't close gaps" turns every closure off.
+    QVERIFY(regionsOf({{outline, 3.0}}, 10.0, false).faces.empty());
+    QVERIFY(regionsOf({{outline, 3.0}}, 0.0).faces.empty());
+}
+
+void TestRegions::treeOpenAtTheFootIsClosedWithItsCrown()
+{
+    // A crown drawn as one arc whose ends meet the tops of the trunk's two lines, the trunk
+    // open at the foot and flaring a little (each side leans ~8° out): the whole tree is
+    // one body. The crown's right end stops 14 px short of its trunk line, more than the gap
+    // (10 px): alone it would close nothing; with the mouth it closes the tree.
+    const double r = std::hypot(15.0, 55.0), top = std::atan2(-55.0, 15.0);
+    const Eigen::MatrixX2d crown =
+        arc(60, r, {0, -60}, M_PI + top, 2 * M_PI - top - 14.0 / r); // (−15, −5) over the top
+    const std::vector<StrokeInput> tree{{crown, 3.0},
+                                        {polyline({{-15, -5}, {-30, 100}}), 3.0},
+                                        {polyline({{15, -5}, {30, 100}}), 3.0}};
+    const Regions closed = regionsOf(tree, 10.0);
+    checkRegions(closed, 3);
+    QCOMPARE(int(closed.faces.size()), 1);
+    QCOMPARE(mouthCount(closed), 1);
+    const int body = faceAt(closed, 0, 60);
+    QVERIFY(body >= 0);
+    QCOMPARE(faceAt(closed, 0, -60), body);
+    QVERIFY(regionsOf(tree, 10.0, false).faces.empty());
+}
+
+void TestRegions::legsUnderABodyStayLines()
+{
+    // A closed body with two legs drawn as lines from its underside, 40 px apart: the space
+    // between them is no shape, whatever the gap.
+    const std::vector<StrokeInput> animal{
+        {arc(90, 40, {0, 0}, 0, 2 * M_PI) * Eigen::DiagonalMatrix<double, 2>(2.0, 1.0), 3.0},
+        {polyline({{-20, 38.7}, {-20, 110}}), 3.0},
+        {polyline({{20, 38.7}, {20, 110}}), 3.0}};
+    const Regions r = regionsOf(animal, 10.0);
+    checkRegions(r, 3);
+    QCOMPARE(mouthCount(r), 0);
+    QCOMPARE(faceAt(r, 0, 80), -1);
+    QVERIFY(faceAt(r, 0, 0) >= 0);
+}
+
+void TestRegions::linesSpreadingFromABodyStayLines()
+{
+    // Two legs drawn as separate lines from one hip point, spreading ~17° each way (a stick
+    // figure's legs under a big round body): chained end to end, but they spread apart and
+    // hold little of the drawing's ink. Drawn as one line turned back on itself (a fish's
+    // tail), the same wedge closes.
+    const StrokeInput body{arc(120, 80, {0, -80}, 0, 2 * M_PI), 3.0};
+    const Regions legs = regionsOf(
+        {body, {polyline({{0, 0}, {-25, 80}}), 3.0}, {polyline({{0, 0}, {25, 80}}), 3.0}}, 10.0);
+    checkRegions(legs, 3);
+    QCOMPARE(mouthCount(legs), 0);
+    QCOMPARE(faceAt(legs, 0, 60), -1);
+    const Regions tail = regionsOf({body, {polyline({{-25, 80}, {0, 0}, {25, 80}}), 3.0}}, 10.0);
+    checkRegions(tail, 2);
+    QCOMPARE(mouthCount(tail), 1);
+    QVERIFY(faceAt(tail, 0, 60) >= 0);
 }
 
 void TestRegions::objectShapeOfTidyOutlineIsItsSilhouette()

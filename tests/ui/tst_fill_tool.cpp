@@ -37,6 +37,23 @@ StrokeDataPtr outline(double gap)
     return data;
 }
 
+// A mitten: the square's outline from (200, 350) up, over and down to (400, 350), left open
+// along its whole bottom side, as a hand is drawn open at the wrist.
+StrokeDataPtr mitten()
+{
+    auto data = std::make_shared<StrokeData>();
+    data->width = 4.0f;
+    const QPolygonF corners{QPointF(200, 350), QPointF(200, 150), QPointF(400, 150),
+                            QPointF(400, 350)};
+    for (qsizetype i = 0; i + 1 < corners.size(); ++i)
+        for (int k = 0; k < 40; ++k) {
+            const QPointF p = corners[i] + (corners[i + 1] - corners[i]) * (k / 40.0);
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        }
+    data->points.push_back({float(corners.back().x()), float(corners.back().y()), 1.0f});
+    return data;
+}
+
 struct Fixture {
     Document doc;
     EditorState state{&doc};
@@ -45,13 +62,13 @@ struct Fixture {
     FillTool *tool = nullptr;
     Id group = kNoId;
 
-    explicit Fixture(double gap = 0.0)
+    explicit Fixture(double gap = 0.0, StrokeDataPtr drawn = nullptr)
     {
         Frame f;
         f.id = doc.allocateId();
         StrokeGroup g;
         g.id = doc.allocateId();
-        g.strokes.push_back({doc.allocateId(), outline(gap)});
+        g.strokes.push_back({doc.allocateId(), drawn ? drawn : outline(gap)});
         f.groups.push_back(g);
         group = g.id;
         DocumentSettings s;
@@ -89,6 +106,7 @@ private slots:
     void rightClickRemoves();
     void hoverHighlightsTheRegion();
     void gapUnderTheSettingIsClosed();
+    void openMouthIsClosedDashedAndFilled();
     void mainWindowHasToolMenuAndCloseGaps();
     void closeGapArrowsStartAtTheAutomaticGap();
 };
@@ -154,6 +172,32 @@ void TestFillTool::gapUnderTheSettingIsClosed()
     QVERIFY(!objectRegions(f.object(), -1.0)->regions().closures.empty());
     QTest::mouseClick(&f.canvas, Qt::LeftButton, {}, f.at(QPointF(300, 250)));
     QCOMPARE(f.object().fills.size(), std::size_t(1));
+}
+
+void TestFillTool::openMouthIsClosedDashedAndFilled()
+{
+    Fixture f(0.0, mitten());
+    const ObjectRegionsPtr regions = objectRegions(f.object(), -1.0);
+    const auto &closures = regions->regions().closures;
+    QCOMPARE(int(closures.size()), 1);
+    QVERIFY(closures[0].mouth);
+    // Shown dashed with the gap closers, across the whole mouth.
+    const std::vector<QLineF> dashed = regions->displayedClosures(f.object());
+    QCOMPARE(int(dashed.size()), 1);
+    const QLineF mouth(QPointF(200, 350), QPointF(400, 350));
+    QVERIFY((dashed[0].p1() - mouth.p1()).manhattanLength() +
+                    (dashed[0].p2() - mouth.p2()).manhattanLength() <
+                1e-3 ||
+            (dashed[0].p1() - mouth.p2()).manhattanLength() +
+                    (dashed[0].p2() - mouth.p1()).manhattanLength() <
+                1e-3);
+    f.setColor(QColor(30, 60, 200));
+    QTest::mouseClick(&f.canvas, Qt::LeftButton, {}, f.at(QPointF(300, 320)));
+    QCOMPARE(f.object().fills.size(), std::size_t(1));
+    QCOMPARE(f.shownAt(QPointF(300, 320)), QColor(30, 60, 200).rgb());
+    QVERIFY(f.shownAt(QPointF(300, 380)) != QColor(30, 60, 200).rgb()); // not past the mouth
+    // "Don't close gaps" (0) turns mouths off as well.
+    QVERIFY(objectRegions(f.object(), 0.0)->regions().closures.empty());
 }
 
 void TestFillTool::mainWindowHasToolMenuAndCloseGaps()

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -206,7 +207,9 @@ public:
         return m_parts.find(m_ends[std::size_t(c.from)].stroke) == m_parts.find(c.toStroke);
     }
 
-    void accept(const Candidate &c)
+    bool used(int end) const { return m_used[std::size_t(end)]; }
+
+    void accept(const Candidate &c, bool mouth = false)
     {
         const End &e = m_ends[std::size_t(c.from)];
         m_used[std::size_t(c.from)] = true;
@@ -214,7 +217,7 @@ public:
             m_used[std::size_t(c.toEnd)] = true;
         m_map.insert(c.exact ? LabelledSegment{e.point, c.to, -1} : linkTo(e.point, c.to, -1));
         m_parts.join(e.stroke, c.toStroke);
-        closures.push_back({e.point, c.to, e.stroke, c.toStroke});
+        closures.push_back({e.point, c.to, e.stroke, c.toStroke, mouth});
         // A free end the closure now touches (the other side of the gap, when the closure
         // went to the point of its stroke rather than to the end itself) has had its gap
         // closed: left free, it would reach on to whatever line is nearest (an arm beside
@@ -354,9 +357,250 @@ bool acceptRing(Closer &closer, const std::vector<Candidate> &deferred, UnionFin
     return false;
 }
 
+// Mouths (regions.h): the facing angle, the face's shape against the mouth's width.
+constexpr double kMouthLeansAway = -0.35; // cos of ~110°: an end may lean this far away
+constexpr double kMouthTwoLines = -0.1;   // as above for the sides of two strokes: ~95°,
+constexpr double kMouthOutline = 0.6;     // unless this share of the ink is around the face
+constexpr double kMouthHeadOn = 1.0;      // the two cosines summing above this: a gap, head on
+constexpr double kMouthDepth = 0.4;       // the face's area ≥ this · d²
+constexpr double kMouthShare = 0.3;       // chord and links ≤ this share of the face's outline
+constexpr double kMouthWidth = 2.0;       // d ≤ this · the widest inscribed circle's diameter
+constexpr double kMouthBorder = 0.5;      // the face borders closed faces along < this · d,
+constexpr double kMouthSpeck = 0.1;       // counting those of at least this · d² only
+constexpr double kMouthBeyond = 0.6;      // nothing drawn this · d beyond the chord
+constexpr double kMouthLinkGap = 2.0;     // a gap joining a mouth's sides: ≤ this · closeGap
+constexpr int kMouthTrials = 24;          // faces tried per drawing at most (each copies the map)
+constexpr int kInscribedGrid = 32;        // samples per side for the widest inscribed circle
+
+// The radius of (about) the widest circle inside the polygon: the largest distance to its
+// outline over a grid of points inside it.
+double widestInscribedRadius(const Polygon &polygon)
+{
+    std::vector<const Eigen::MatrixX2d *> rings{&polygon.outer};
+    for (const Eigen::MatrixX2d &hole : polygon.holes)
+        rings.push_back(&hole);
+    const Eigen::Vector2d lo = polygon.outer.colwise().minCoeff().transpose();
+    const Eigen::Vector2d hi = polygon.outer.colwise().maxCoeff().transpose();
+    const Region region{polygon};
+    double best = 0.0;
+    for (int i = 0; i < kInscribedGrid; ++i)
+        for (int j = 0; j < kInscribedGrid; ++j) {
+            const Eigen::Vector2d p(lo.x() + (hi.x() - lo.x()) * (i + 0.5) / kInscribedGrid,
+                                    lo.y() + (hi.y() - lo.y()) * (j + 0.5) / kInscribedGrid);
+            if (!regionContains(region, p.x(), p.y()))
+                continue;
+            double nearest = std::numeric_limits<double>::max();
+            for (const Eigen::MatrixX2d *ring : rings)
+                for (Eigen::Index k = 0, n = ring->rows(); k < n && nearest > best; ++k)
+                    nearest =
+                        std::min(nearest, (closestOnSegment(p, ring->row(k).transpose(),
+                                                            ring->row((k + 1) % n).transpose()) -
+                                           p)
+                                              .norm());
+            best = std::max(best, nearest);
+        }
+    return best;
+}
+
+struct Mouth {
+    int from = -1, to = -1; // free end indices
+    double width = 0.0;
+    double leansAway = 0.0; // the smaller cosine of the ends' ways against the chord
+    Eigen::Vector2d inward; // unit normal of the chord, towards the shape it opens
+};
+
+// Pairs of free ends left that lie side by side, facing each other across the chord or
+// running beside each other, narrower first.
+std::vector<Mouth> mouthCandidates(const StrokeSoup &soup, const std::vector<End> &ends,
+                                   const Closer &closer)
+{
+    std::vector<Mouth> out;
+    for (int i = 0; i < int(ends.size()); ++i)
+        for (int k = i + 1; k < int(ends.size()); ++k) {
+            if (closer.used(i) || closer.used(k))
+                continue;
+            const End &a = ends[std::size_t(i)], &b = ends[std::size_t(k)];
+            const Eigen::Vector2d chord = b.point - a.point;
+            const double d = chord.norm();
+            if (!(d > 0.0))
+                continue;
+            const Eigen::Vector2d u = chord / d;
+            // The way each line leaves at the mouth's scale, not its last wobble.
+            const auto leaving = [&](const End &e) {
+                const double length = soup.strokes()[std::size_t(e.stroke)].length;
+                return soup.endDirectionOver(e.stroke, e.end, std::min(0.5 * d, 0.3 * length));
+            };
+            const Eigen::Vector2d ta = leaving(a), tb = leaving(b);
+            const double ca = ta.dot(u), cb = -tb.dot(u);
+            if (ca < kMouthLeansAway || cb < kMouthLeansAway || ca + cb > kMouthHeadOn)
+                continue;
+            const Eigen::Vector2d n(-u.y(), u.x());
+            const double side = (ta + tb).dot(n);
+            if (std::abs(side) < 1e-6 || ta.dot(n) * tb.dot(n) < -0.25)
+                continue; // they leave on opposite sides of the chord: an S, not a mouth
+            out.push_back({i, k, d, std::min(ca, cb), side > 0.0 ? Eigen::Vector2d(-n) : n});
+        }
+    std::sort(out.begin(), out.end(),
+              [](const Mouth &a, const Mouth &b) { return a.width < b.width; });
+    return out;
+}
+
+// The gap closures (best first) that would join the mouth's two parts when nothing joins
+// them yet (an outline drawn in pieces that stop short of each other and also open at a
+// wrist; with the mouth's evidence of a shape, a gap up to kMouthLinkGap times the gap
+// distance): a path through the forest the usable closures grow over the parts, none of them
+// using the mouth's ends or crossing its chord. Empty when the parts stay apart.
+std::vector<const Candidate *> linksAcross(const Candidate &mouth,
+                                           const std::vector<Candidate> &all, const Closer &closer,
+                                           UnionFind &parts, const std::vector<End> &ends,
+                                           int strokeCount)
+{
+    const int from = parts.find(ends[std::size_t(mouth.from)].stroke);
+    const int to = parts.find(mouth.toStroke);
+    UnionFind forest(strokeCount);
+    std::vector<bool> endTaken(ends.size(), false);
+    endTaken[std::size_t(mouth.from)] = endTaken[std::size_t(mouth.toEnd)] = true;
+    std::map<int, std::vector<std::pair<int, const Candidate *>>> links;
+    const Eigen::Vector2d p = ends[std::size_t(mouth.from)].point;
+    for (const Candidate &c : all) {
+        const int a = parts.find(ends[std::size_t(c.from)].stroke), b = parts.find(c.toStroke);
+        if (a == b || forest.find(a) == forest.find(b) || endTaken[std::size_t(c.from)] ||
+            (c.toEnd >= 0 && endTaken[std::size_t(c.toEnd)]) || !closer.usable(c) ||
+            segmentsCross(ends[std::size_t(c.from)].point, c.to, p, mouth.to, kContactSlack))
+            continue;
+        forest.join(a, b);
+        links[a].emplace_back(b, &c);
+        links[b].emplace_back(a, &c);
+        endTaken[std::size_t(c.from)] = true;
+        if (c.toEnd >= 0)
+            endTaken[std::size_t(c.toEnd)] = true;
+        if (forest.find(from) != forest.find(to))
+            continue;
+        std::map<int, std::pair<int, const Candidate *>> cameFrom{{from, {from, nullptr}}};
+        std::vector<int> queue{from};
+        for (std::size_t q = 0; q < queue.size() && !cameFrom.count(to); ++q)
+            for (const auto &[next, link] : links[queue[q]])
+                if (cameFrom.emplace(next, std::make_pair(queue[q], link)).second)
+                    queue.push_back(next);
+        std::vector<const Candidate *> path;
+        for (int at = to; at != from; at = cameFrom.at(at).first)
+            path.push_back(cameFrom.at(at).second);
+        return path;
+    }
+    return {};
+}
+
+// Whether the mouth's own outline goes on beyond the chord, within kMouthBeyond of the
+// mouth's width (a circle with a gap, whose chord across it would cut it in two, has its
+// other side within half the chord): a mouth opens onto nothing of its own (another part
+// may lie there: the body a wing is drawn against).
+bool inkBeyond(const StrokeSoup &soup, UnionFind &chains, int chain, const Eigen::Vector2d &a,
+               const Eigen::Vector2d &b, const Eigen::Vector2d &outward)
+{
+    const double d = (b - a).norm();
+    for (const SoupSegment &segment : soup.segments()) {
+        if (chains.find(segment.stroke) != chain)
+            continue;
+        for (double t : {0.25, 0.5, 0.75}) {
+            const Eigen::Vector2d from = a + t * (b - a);
+            if (segmentsCross(from, from + kMouthBeyond * d * outward, segment.a, segment.b, 0.0))
+                return true;
+        }
+    }
+    return false;
+}
+
+// Strokes chained end to end: an end within `reach` of another stroke's end. An outline
+// drawn in several strokes is one chain; a leg drawn as a line from a body's side is not
+// chained to the body (its end meets the body's line, not an end).
+UnionFind endChains(const StrokeSoup &soup, double reach)
+{
+    const int n = int(soup.strokes().size());
+    UnionFind chains(n);
+    for (int s = 0; s < n; ++s)
+        for (int j = s + 1; j < n; ++j) {
+            if (soup.strokes()[std::size_t(s)].segmentCount == 0 ||
+                soup.strokes()[std::size_t(j)].segmentCount == 0)
+                continue;
+            for (int e = 0; e < 2; ++e)
+                for (int f = 0; f < 2; ++f)
+                    if ((soup.endPoint(s, e) - soup.endPoint(j, f)).norm() <= reach)
+                        chains.join(s, j);
+        }
+    return chains;
+}
+
+// Closes the mouths that open a shape (regions.h), with the gap closures that join their
+// two sides when the drawing does not.
+void closeMouths(const StrokeSoup &soup, const std::vector<End> &ends,
+                 const std::vector<Candidate> &all, Closer &closer, UnionFind &parts,
+                 const PlanarMap &map, double closeGap)
+{
+    UnionFind chains = endChains(soup, closeGap);
+    int trials = 0;
+    for (const Mouth &m : mouthCandidates(soup, ends, closer)) {
+        if (trials >= kMouthTrials)
+            break;
+        const End &a = ends[std::size_t(m.from)], &b = ends[std::size_t(m.to)];
+        const Candidate c{m.from, m.to, b.stroke, b.point, true, 0.0};
+        if (!closer.usable(c) ||
+            inkBeyond(soup, chains, chains.find(a.stroke), a.point, b.point, -m.inward) ||
+            inkBeyond(soup, chains, chains.find(b.stroke), a.point, b.point, -m.inward))
+            continue;
+        std::vector<const Candidate *> links;
+        if (!closer.connected(c)) {
+            links = linksAcross(c, all, closer, parts, ends, int(soup.strokes().size()));
+            if (links.empty())
+                continue;
+        }
+        ++trials;
+        std::vector<LabelledSegment> segments{{a.point, b.point, -1}};
+        double closed = m.width; // the face's outline along closures, not lines
+        for (const Candidate *link : links)
+            closed += (link->to - ends[std::size_t(link->from)].point).norm();
+        for (const Candidate *link : links)
+            segments.push_back(
+                link->exact ? LabelledSegment{ends[std::size_t(link->from)].point, link->to, -1}
+                            : linkTo(ends[std::size_t(link->from)].point, link->to, -1));
+        const Eigen::Vector2d probe = 0.5 * (a.point + b.point) + 0.01 * m.width * m.inward;
+        const auto trial = map.trialFace(segments, probe, kMouthSpeck * m.width * m.width);
+        // The face's lines are the mouth's own outline: every stroke around it chained end
+        // to end with the mouth's sides or the links' (not two lines hung from a body).
+        std::vector<int> own{chains.find(a.stroke), chains.find(b.stroke)};
+        for (const Candidate *link : links)
+            own.insert(own.end(), {chains.find(ends[std::size_t(link->from)].stroke),
+                                   chains.find(link->toStroke)});
+        const bool ownOutline =
+            trial && std::all_of(trial->face.labels.begin(), trial->face.labels.end(), [&](int l) {
+                return std::find(own.begin(), own.end(), chains.find(l)) != own.end();
+            });
+        // Two lines drawn apart that spread from where they meet (legs, antennae, whiskers
+        // hung from a body) are no mouth, unless the face is the drawing's outline (a
+        // trunk's two sides under the crown). One line turned back on itself (a fish's
+        // tail, a leg drawn as a V) may spread, and two parallel lines (a tail) may.
+        double around = 0.0, inked = 0.0;
+        if (trial)
+            for (int l : trial->face.labels)
+                around += soup.strokes()[std::size_t(l)].length;
+        for (const SoupStroke &stroke : soup.strokes())
+            inked += stroke.length;
+        const bool spreadsApart =
+            a.stroke != b.stroke && m.leansAway < kMouthTwoLines && around < kMouthOutline * inked;
+        if (!trial || !ownOutline || spreadsApart ||
+            trial->face.area < kMouthDepth * m.width * m.width ||
+            closed > kMouthShare * trial->face.perimeter ||
+            trial->sharedWithBounded >= kMouthBorder * m.width ||
+            m.width > kMouthWidth * 2.0 * widestInscribedRadius(trial->face.polygon))
+            continue;
+        for (const Candidate *link : links)
+            closer.accept(*link);
+        closer.accept(c, true);
+    }
+}
+
 } // namespace
 
-GapClosingResult closeGaps(const StrokeSoup &soup, double closeGap, PlanarMap &map)
+GapClosingResult closeGaps(const StrokeSoup &soup, double closeGap, bool mouths, PlanarMap &map)
 {
     std::vector<LabelledSegment> segments, snaps;
     std::vector<std::pair<int, int>> snapStrokes;
@@ -408,6 +652,9 @@ GapClosingResult closeGaps(const StrokeSoup &soup, double closeGap, PlanarMap &m
         else if (std::exchange(headOnFirst, false) == false)
             break;
     }
+    if (mouths)
+        closeMouths(soup, ends, candidates(soup, ends, kMouthLinkGap * closeGap), closer, parts,
+                    map, closeGap);
     result.closures = std::move(closer.closures);
     return result;
 }

@@ -16,7 +16,8 @@ struct GapClosingResult {
     int freeEnds = 0;
 };
 
-// Inserts the strokes, the snaps of touching ends and the accepted closures into `map`.
-GapClosingResult closeGaps(const StrokeSoup &soup, double closeGap, PlanarMap &map);
+// Inserts the strokes, the snaps of touching ends and the accepted closures into `map`; with
+// `mouths`, then the mouths' chords.
+GapClosingResult closeGaps(const StrokeSoup &soup, double closeGap, bool mouths, PlanarMap &map);
 
 } // namespace finbook::geometry::detail

@@ -169,6 +169,53 @@ bool PlanarMap::inBoundedFace(const Eigen::Vector2d &p) const
     return face && !(*face)->is_unbounded();
 }
 
+std::optional<PlanarMap::Trial> PlanarMap::trialFace(const std::vector<LabelledSegment> &segments,
+                                                     const Eigen::Vector2d &probe,
+                                                     double minNeighbourArea) const
+{
+    Arrangement trial(m->arrangement);
+    for (const LabelledSegment &s : segments)
+        if (s.a != s.b)
+            CGAL::insert(trial, Curve(SegmentTraits::Curve_2(toPoint(s.a), toPoint(s.b)), s.label));
+    CGAL::Arr_walk_along_line_point_location<Arrangement> locator(trial);
+    const auto result = locator.locate(toPoint(probe));
+    const FaceHandle *face = boost::get<FaceHandle>(&result);
+    if (!face || (*face)->is_unbounded())
+        return std::nullopt;
+    const Boundary boundary = boundaryOf(*face);
+    Trial out{toMapFace(boundary), 0.0};
+    // Bounded before the trial (a face the added segments close as well does not count), and
+    // not a speck.
+    CGAL::Arr_walk_along_line_point_location<Arrangement> before(m->arrangement);
+    std::unordered_map<const void *, double> areas;
+    for (const auto &cycle : boundary.cycles)
+        for (HalfedgeHandle h : cycle) {
+            if (h->twin()->face()->is_unbounded())
+                continue;
+            const Eigen::Vector2d a = toVector(h->source()->point());
+            const Eigen::Vector2d d = toVector(h->target()->point()) - a;
+            const double length = d.norm();
+            if (!(length > 0.0))
+                continue;
+            // The face lies left of its halfedges; its neighbour, right.
+            const Eigen::Vector2d right(d.y() / length, -d.x() / length);
+            const auto where =
+                before.locate(toPoint(a + 0.5 * d + std::min(0.01 * length, 0.05) * right));
+            const FaceHandle *other = boost::get<FaceHandle>(&where);
+            if (!other || (*other)->is_unbounded())
+                continue;
+            const auto known = areas.find(&**other);
+            const double area = known != areas.end()
+                                    ? known->second
+                                    : areas[&**other] = toMapFace(boundaryOf(*other)).area;
+            if (area >= minNeighbourArea)
+                out.sharedWithBounded += length;
+        }
+    if (out.face.polygon.outer.rows() < 3 || !(out.face.area > 0.0))
+        return std::nullopt;
+    return out;
+}
+
 void PlanarMap::forEachContact(const std::function<void(int, int)> &join) const
 {
     for (auto e = m->arrangement.edges_begin(); e != m->arrangement.edges_end(); ++e) {

@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace finbook::geometry::detail {
@@ -38,6 +39,17 @@ public:
 
     // Whether p lies in the interior of a bounded face (not on an edge or vertex).
     bool inBoundedFace(const Eigen::Vector2d &p) const;
+
+    // The bounded face that would contain `probe` were `segments` added (the map itself is
+    // left as it is), and the length of that face's outline it would share with faces that
+    // are bounded already and at least `minNeighbourArea` large; nothing when `probe` would
+    // not lie inside a bounded face.
+    struct Trial {
+        MapFace face;
+        double sharedWithBounded = 0.0;
+    };
+    std::optional<Trial> trialFace(const std::vector<LabelledSegment> &segments,
+                                   const Eigen::Vector2d &probe, double minNeighbourArea) const;
 
     // Calls join(a, b) for every two labels that meet: share an edge (overlap) or a vertex.
     void forEachContact(const std::function<void(int, int)> &join) const;

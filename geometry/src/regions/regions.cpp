@@ -88,7 +88,8 @@ Expected<Regions, GeometryError> compute(const std::vector<StrokeInput> &strokes
                                 "quickly (scribbled shading?); the object keeps its ink as its "
                                 "shape."));
     detail::PlanarMap map;
-    detail::GapClosingResult gaps = detail::closeGaps(soup, regions.closeGap, map);
+    detail::GapClosingResult gaps =
+        detail::closeGaps(soup, regions.closeGap, options.closeMouths, map);
     regions.closures = std::move(gaps.closures);
     regions.freeEnds = gaps.freeEnds;
     const double w = std::max(medianWidth(strokes), 0.5);

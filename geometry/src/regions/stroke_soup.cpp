@@ -124,6 +124,33 @@ double StrokeSoup::endArc(int stroke, int end) const
     return end == 0 ? 0.0 : m_strokes[std::size_t(stroke)].length;
 }
 
+Eigen::Vector2d StrokeSoup::endDirectionOver(int stroke, int end, double arc) const
+{
+    const Eigen::MatrixX2d &pts = m_strokes[std::size_t(stroke)].points;
+    const Eigen::Index n = pts.rows();
+    if (n < 2)
+        return Eigen::Vector2d::Zero();
+    const auto at = [&](Eigen::Index i) -> Eigen::Vector2d {
+        return pts.row(end == 0 ? i : n - 1 - i).transpose();
+    };
+    const Eigen::Vector2d tip = at(0);
+    double walked = 0.0;
+    Eigen::Vector2d from = at(1);
+    for (Eigen::Index i = 1; i < n; ++i) {
+        const double step = (at(i) - at(i - 1)).norm();
+        if (walked + step >= arc) {
+            const double t = step > 0.0 ? (arc - walked) / step : 0.0;
+            from = at(i - 1) + t * (at(i) - at(i - 1));
+            break;
+        }
+        walked += step;
+        from = at(i);
+    }
+    const Eigen::Vector2d d = tip - from;
+    const double len = d.norm();
+    return len > 0.0 ? Eigen::Vector2d(d / len) : endDirection(stroke, end);
+}
+
 NearestPoint StrokeSoup::nearestOnStroke(int s, const Eigen::Vector2d &p, int ownStroke,
                                          double ownArc, double arcFactor, double arcExtra) const
 {

@@ -46,6 +46,9 @@ public:
     Eigen::Vector2d endDirection(int stroke, int end) const;
     // Arc length of the end along its stroke (0 or the stroke's length).
     double endArc(int stroke, int end) const;
+    // The unit direction from the point `arc` px along the stroke from its end to the end:
+    // the way the line leaves at the scale of `arc` rather than of its last segment.
+    Eigen::Vector2d endDirectionOver(int stroke, int end, double arc) const;
 
     // Whether stroke s has segments and comes within r of p (its bounding box does).
     bool within(int s, const Eigen::Vector2d &p, double r) const;

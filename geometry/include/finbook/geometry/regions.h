@@ -12,6 +12,28 @@
 // ring of closures through three or more parts: an outline drawn in several strokes that
 // each stop short of the next); closures that continue the end's direction are preferred. Faces
 // thinner than a pen width (slivers from overshoots) are merged into their neighbour.
+//
+// Then open *mouths* are closed, as people read an outline drawn open at a wrist, at the foot
+// of a trunk or at a tail as a closed shape. Two free ends still left that lie side by side
+// are joined by the chord between them when:
+// - facing angle: neither leans away from the other by more than ~110° from the chord, and
+//   they do not point at each other head-on (that is a gap, for the gap distance to decide);
+//   two separate lines that spread apart (legs, antennae, whiskers hung from a body) are
+//   taken only when the face they close holds most of the drawing's ink on its outline (a
+//   trunk's two sides under the crown);
+// - they are connected through the drawing, or a gap of up to twice the gap distance
+//   between free ends connects them;
+// - the face the chord closes is a shape the mouth opens, not a sliver or the space between
+//   appendages: the mouth no wider than twice the widest circle inside it (the mouth's width
+//   against the local width), the face at least 0.4 d² in area, the chord and its gaps at
+//   most 30 % of the face's outline, every line around it chained end to end with the
+//   mouth's sides, and the face bordering faces closed already along less than half the
+//   mouth's width (the space under a body between two legs drawn as lines is no shape);
+// - the mouth opens onto nothing of its own: no line chained with its sides within 0.6 of
+//   its width beyond it (a circle with a gap is not cut in two across it; a wing may open
+//   onto the body it is drawn against);
+// - the chord crosses no stroke and no closure and runs through no closed region, as
+//   closures do. Narrower mouths first.
 #pragma once
 
 #include <finbook/geometry/expected.h>
@@ -30,12 +52,16 @@ struct RegionsOptions {
     // end) are closed. < 0 means automatic: autoCloseGap(strokes). Must not be NaN or above
     // kMaxPenWidth.
     double closeGap = -1.0;
+    // Open mouths are closed too (a hand open at the wrist, a trunk open at the bottom): see
+    // above. Only with closeGap != 0, which turns every closure off.
+    bool closeMouths = true;
 };
 
 struct GapClosure {           // a segment added to close a face
     Eigen::Vector2d from, to; // from = the free end
     int fromStroke = -1;      // index into the input strokes
     int toStroke = -1;        // index into the input strokes
+    bool mouth = false;       // a mouth's chord, not a gap (may be longer than closeGap)
 };
 
 struct Face {        // one bounded face of the arrangement (after gap closing)
