@@ -22,6 +22,13 @@
 // wide (thin_tips.h), thin_tips_reached those a bone comes within that width of (drawn as
 // magenta rings, filled when reached); outside_px is the bones' length outside the shape. The
 // last line totals them: outside_share = outside_px / bone_px over all files.
+// Issue 48's measures of what the eye sees: air_px (the bones' length outside the shape, as
+// outside_px) and air_over_1pct (more than 1 % of the bone length in the air); spurs, the
+// branches from a junction to a tip shorter than 1.5 times the junction's radius (they poke
+// into a corner, a tick mark or a hem instead of running down a limb; orange rings in the
+// pictures); root_radius_ratio, the root's inscribed radius over the largest in the shape
+// (the root belongs in the thickest part of the body). The last line counts the files with
+// spurs, with air over 1 %, and with the root's ratio at least 0.7.
 #include "../geometry/geometry_test_support.h"
 #include "bench.h"
 #include "thin_tips.h"
@@ -48,6 +55,7 @@
 #include <limits>
 #include <optional>
 #include <time.h>
+#include <utility>
 
 namespace {
 
@@ -166,6 +174,7 @@ double bonesInside(const Skeleton &s, const Region &region, double *boneLength =
 
 struct Totals {
     int wiresBefore = 0, wiresAfter = 0, tips = 0, reached = 0;
+    int spurs = 0, filesWithSpurs = 0, airOver1Pct = 0, rootThick = 0, rooted = 0;
     double bonePx = 0.0, outsidePx = 0.0;
     std::vector<double> cpuMs;
 };
@@ -215,6 +224,36 @@ std::optional<bool> isWire(const Region &shape, const std::vector<Eigen::MatrixX
     if (!s)
         return std::nullopt;
     return boneLengthOnLines(*s, lines) > 0.5;
+}
+
+constexpr double kSpurFactor = 1.5; // a branch shorter than this × its junction's radius
+
+// The tips of the branches that end within kSpurFactor of their junction's radius: from each
+// tip along joints of two bones to the first junction.
+std::vector<int> spurTips(const Skeleton &s)
+{
+    std::vector<std::vector<int>> next(std::size_t(s.jointCount()));
+    for (int j = 0; j < s.jointCount(); ++j)
+        if (s.parent(j) >= 0) {
+            next[std::size_t(j)].push_back(s.parent(j));
+            next[std::size_t(s.parent(j))].push_back(j);
+        }
+    std::vector<int> out;
+    for (int tip = 0; tip < s.jointCount(); ++tip) {
+        if (next[std::size_t(tip)].size() != 1)
+            continue;
+        int previous = tip, at = next[std::size_t(tip)][0];
+        double length = (s.joints.row(at) - s.joints.row(tip)).norm();
+        while (next[std::size_t(at)].size() == 2) {
+            const int step = next[std::size_t(at)][0] == previous ? next[std::size_t(at)][1]
+                                                                  : next[std::size_t(at)][0];
+            length += (s.joints.row(step) - s.joints.row(at)).norm();
+            previous = std::exchange(at, step);
+        }
+        if (next[std::size_t(at)].size() >= 3 && length < kSpurFactor * s.radius(at))
+            out.push_back(tip);
+    }
+    return out;
 }
 
 void writePicture(const QString &dir, const QString &name, const Region &shape,
@@ -268,6 +307,9 @@ void writePicture(const QString &dir, const QString &name, const Region &shape,
         if (s.limbBase[std::size_t(j)])
             painter.drawEllipse(QPointF(s.joints(j, 0), s.joints(j, 1)), 4.0 / scale, 4.0 / scale);
     painter.setBrush(QBrush());
+    painter.setPen(QPen(QColor(255, 140, 0), 3.0 / scale));
+    for (int tip : spurTips(s))
+        painter.drawEllipse(QPointF(s.joints(tip, 0), s.joints(tip, 1)), 9.0 / scale, 9.0 / scale);
     painter.setPen(QPen(Qt::magenta, 2.0 / scale));
     for (const auto &[tip, reached] : tips) {
         painter.setBrush(reached ? QBrush(Qt::magenta) : QBrush());
@@ -368,6 +410,18 @@ QJsonObject measure(const QString &path, const Input &input, const QString &pngD
     row.insert(QStringLiteral("outside_px"), (1.0 - inside) * bonePx);
     totals.bonePx += bonePx;
     totals.outsidePx += (1.0 - inside) * bonePx;
+    row.insert(QStringLiteral("air_px"), (1.0 - inside) * bonePx);
+    totals.airOver1Pct += 1.0 - inside > 0.01 ? 1 : 0;
+    const int spurs = int(spurTips(*skeleton).size());
+    row.insert(QStringLiteral("spurs"), spurs);
+    totals.spurs += spurs;
+    totals.filesWithSpurs += spurs > 0 ? 1 : 0;
+    if (skeleton->root >= 0 && raw->radius.size() > 0 && raw->radius.maxCoeff() > 0.0) {
+        const double ratio = skeleton->radius(skeleton->root) / raw->radius.maxCoeff();
+        row.insert(QStringLiteral("root_radius_ratio"), ratio);
+        totals.rooted += 1;
+        totals.rootThick += ratio >= 0.7 ? 1 : 0;
+    }
     totals.cpuMs.push_back(median(cpuMs));
     Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(1e300), hi = -lo;
     for (const Eigen::MatrixX2d &ring : regionRings(shape)) {
@@ -463,6 +517,11 @@ int benchSkeleton(const QStringList &arguments)
                               {QStringLiteral("outside_px"), totals.outsidePx},
                               {QStringLiteral("outside_share"),
                                totals.bonePx > 0.0 ? totals.outsidePx / totals.bonePx : 0.0},
+                              {QStringLiteral("air_over_1pct_files"), totals.airOver1Pct},
+                              {QStringLiteral("spurs"), totals.spurs},
+                              {QStringLiteral("files_with_spurs"), totals.filesWithSpurs},
+                              {QStringLiteral("root_radius_ratio_at_least_0_7"),
+                               totals.rooted > 0 ? double(totals.rootThick) / totals.rooted : 0.0},
                               {QStringLiteral("thin_tips"), totals.tips},
                               {QStringLiteral("thin_tips_reached"), totals.reached},
                               {QStringLiteral("median_skeleton_cpu_ms"),
