@@ -20,14 +20,11 @@ using namespace finbook::model;
 using namespace finbook::ui;
 
 namespace {
-// A square outline from (200, 150) to (400, 350), open by `gap` px on its right side.
-StrokeDataPtr outline(double gap)
+// A stroke 4 px wide through `corners`, 40 points per side.
+StrokeDataPtr through(const QPolygonF &corners)
 {
     auto data = std::make_shared<StrokeData>();
     data->width = 4.0f;
-    const QPolygonF corners{QPointF(400, 250 - gap / 2), QPointF(400, 150),
-                            QPointF(200, 150),           QPointF(200, 350),
-                            QPointF(400, 350),           QPointF(400, 250 + gap / 2)};
     for (qsizetype i = 0; i + 1 < corners.size(); ++i)
         for (int k = 0; k < 40; ++k) {
             const QPointF p = corners[i] + (corners[i + 1] - corners[i]) * (k / 40.0);
@@ -37,21 +34,18 @@ StrokeDataPtr outline(double gap)
     return data;
 }
 
+// A square outline from (200, 150) to (400, 350), open by `gap` px on its right side.
+StrokeDataPtr outline(double gap)
+{
+    return through({QPointF(400, 250 - gap / 2), QPointF(400, 150), QPointF(200, 150),
+                    QPointF(200, 350), QPointF(400, 350), QPointF(400, 250 + gap / 2)});
+}
+
 // A mitten: the square's outline from (200, 350) up, over and down to (400, 350), left open
 // along its whole bottom side, as a hand is drawn open at the wrist.
 StrokeDataPtr mitten()
 {
-    auto data = std::make_shared<StrokeData>();
-    data->width = 4.0f;
-    const QPolygonF corners{QPointF(200, 350), QPointF(200, 150), QPointF(400, 150),
-                            QPointF(400, 350)};
-    for (qsizetype i = 0; i + 1 < corners.size(); ++i)
-        for (int k = 0; k < 40; ++k) {
-            const QPointF p = corners[i] + (corners[i + 1] - corners[i]) * (k / 40.0);
-            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-        }
-    data->points.push_back({float(corners.back().x()), float(corners.back().y()), 1.0f});
-    return data;
+    return through({QPointF(200, 350), QPointF(200, 150), QPointF(400, 150), QPointF(400, 350)});
 }
 
 struct Fixture {

@@ -298,6 +298,55 @@ bool acceptPairs(Closer &closer, const std::vector<Candidate> &deferred, UnionFi
     return false;
 }
 
+// Closures between parts grown into a forest over the parts, each free end used once
+// (acceptRing, linksAcross), and the path of closures between two parts in it.
+class LinkForest {
+public:
+    LinkForest(int strokeCount, std::size_t endCount)
+        : m_forest(strokeCount)
+        , m_endTaken(endCount, false)
+    {}
+
+    bool joined(int a, int b) { return m_forest.find(a) == m_forest.find(b); }
+    bool endsFree(const Candidate &c) const
+    {
+        return !m_endTaken[std::size_t(c.from)] &&
+               (c.toEnd < 0 || !m_endTaken[std::size_t(c.toEnd)]);
+    }
+    void takeEnd(int end) { m_endTaken[std::size_t(end)] = true; }
+
+    // Joins parts a and b (c's ends' parts) by c.
+    void add(const Candidate &c, int a, int b)
+    {
+        m_forest.join(a, b);
+        m_links[a].emplace_back(b, &c);
+        m_links[b].emplace_back(a, &c);
+        takeEnd(c.from);
+        if (c.toEnd >= 0)
+            takeEnd(c.toEnd);
+    }
+
+    // The closures from part `from` to part `to`, which the forest joins.
+    std::vector<const Candidate *> path(int from, int to)
+    {
+        std::map<int, std::pair<int, const Candidate *>> cameFrom{{from, {from, nullptr}}};
+        std::vector<int> queue{from};
+        for (std::size_t q = 0; q < queue.size() && !cameFrom.count(to); ++q)
+            for (const auto &[next, c] : m_links[queue[q]])
+                if (cameFrom.emplace(next, std::make_pair(queue[q], c)).second)
+                    queue.push_back(next);
+        std::vector<const Candidate *> out;
+        for (int at = to; at != from; at = cameFrom.at(at).first)
+            out.push_back(cameFrom.at(at).second);
+        return out;
+    }
+
+private:
+    UnionFind m_forest;
+    std::vector<bool> m_endTaken;
+    std::map<int, std::vector<std::pair<int, const Candidate *>>> m_links;
+};
+
 // A ring of parts, each joined to the next by one short closure (an outline drawn in several
 // strokes that all stop short of each other): no closure closes anything alone and no two join
 // the same two parts. The best usable closures between parts grow a forest over the parts,
@@ -306,21 +355,7 @@ bool acceptPairs(Closer &closer, const std::vector<Candidate> &deferred, UnionFi
 bool acceptRing(Closer &closer, const std::vector<Candidate> &deferred, UnionFind &parts,
                 const std::vector<End> &ends, int strokeCount)
 {
-    UnionFind forest(strokeCount);
-    std::vector<bool> endTaken(ends.size(), false);
-    std::map<int, std::vector<std::pair<int, const Candidate *>>> links;
-    const auto pathBetween = [&](int from, int to) {
-        std::map<int, std::pair<int, const Candidate *>> cameFrom{{from, {from, nullptr}}};
-        std::vector<int> queue{from};
-        for (std::size_t q = 0; q < queue.size() && !cameFrom.count(to); ++q)
-            for (const auto &[next, c] : links[queue[q]])
-                if (cameFrom.emplace(next, std::make_pair(queue[q], c)).second)
-                    queue.push_back(next);
-        std::vector<const Candidate *> path;
-        for (int at = to; at != from; at = cameFrom.at(at).first)
-            path.push_back(cameFrom.at(at).second);
-        return path;
-    };
+    LinkForest forest(strokeCount, ends.size());
     const auto crossesEachOther = [&](const std::vector<const Candidate *> &ring) {
         for (std::size_t i = 0; i < ring.size(); ++i)
             for (std::size_t j = i + 1; j < ring.size(); ++j)
@@ -332,19 +367,13 @@ bool acceptRing(Closer &closer, const std::vector<Candidate> &deferred, UnionFin
     };
     for (const Candidate &c : deferred) {
         const int a = parts.find(ends[std::size_t(c.from)].stroke), b = parts.find(c.toStroke);
-        if (a == b || endTaken[std::size_t(c.from)] ||
-            (c.toEnd >= 0 && endTaken[std::size_t(c.toEnd)]) || !closer.usable(c))
+        if (a == b || !forest.endsFree(c) || !closer.usable(c))
             continue;
-        if (forest.find(a) != forest.find(b)) {
-            forest.join(a, b);
-            links[a].emplace_back(b, &c);
-            links[b].emplace_back(a, &c);
-            endTaken[std::size_t(c.from)] = true;
-            if (c.toEnd >= 0)
-                endTaken[std::size_t(c.toEnd)] = true;
+        if (!forest.joined(a, b)) {
+            forest.add(c, a, b);
             continue;
         }
-        std::vector<const Candidate *> ring = pathBetween(a, b);
+        std::vector<const Candidate *> ring = forest.path(a, b);
         if (ring.size() < 2) // two parts: acceptPairs' rule (and its slot test) decides
             continue;
         ring.push_back(&c);
@@ -457,35 +486,18 @@ std::vector<const Candidate *> linksAcross(const Candidate &mouth,
 {
     const int from = parts.find(ends[std::size_t(mouth.from)].stroke);
     const int to = parts.find(mouth.toStroke);
-    UnionFind forest(strokeCount);
-    std::vector<bool> endTaken(ends.size(), false);
-    endTaken[std::size_t(mouth.from)] = endTaken[std::size_t(mouth.toEnd)] = true;
-    std::map<int, std::vector<std::pair<int, const Candidate *>>> links;
+    LinkForest forest(strokeCount, ends.size());
+    forest.takeEnd(mouth.from);
+    forest.takeEnd(mouth.toEnd);
     const Eigen::Vector2d p = ends[std::size_t(mouth.from)].point;
     for (const Candidate &c : all) {
         const int a = parts.find(ends[std::size_t(c.from)].stroke), b = parts.find(c.toStroke);
-        if (a == b || forest.find(a) == forest.find(b) || endTaken[std::size_t(c.from)] ||
-            (c.toEnd >= 0 && endTaken[std::size_t(c.toEnd)]) || !closer.usable(c) ||
+        if (a == b || forest.joined(a, b) || !forest.endsFree(c) || !closer.usable(c) ||
             segmentsCross(ends[std::size_t(c.from)].point, c.to, p, mouth.to, kContactSlack))
             continue;
-        forest.join(a, b);
-        links[a].emplace_back(b, &c);
-        links[b].emplace_back(a, &c);
-        endTaken[std::size_t(c.from)] = true;
-        if (c.toEnd >= 0)
-            endTaken[std::size_t(c.toEnd)] = true;
-        if (forest.find(from) != forest.find(to))
-            continue;
-        std::map<int, std::pair<int, const Candidate *>> cameFrom{{from, {from, nullptr}}};
-        std::vector<int> queue{from};
-        for (std::size_t q = 0; q < queue.size() && !cameFrom.count(to); ++q)
-            for (const auto &[next, link] : links[queue[q]])
-                if (cameFrom.emplace(next, std::make_pair(queue[q], link)).second)
-                    queue.push_back(next);
-        std::vector<const Candidate *> path;
-        for (int at = to; at != from; at = cameFrom.at(at).first)
-            path.push_back(cameFrom.at(at).second);
-        return path;
+        forest.add(c, a, b);
+        if (forest.joined(from, to))
+            return forest.path(from, to);
     }
     return {};
 }
