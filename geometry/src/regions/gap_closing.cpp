@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <utility>
 
 namespace finbook::geometry::detail {
@@ -544,13 +545,19 @@ UnionFind endChains(const StrokeSoup &soup, double reach)
 
 // Closes the mouths that open a shape (regions.h), with the gap closures that join their
 // two sides when the drawing does not.
-void closeMouths(const StrokeSoup &soup, const std::vector<End> &ends,
-                 const std::vector<Candidate> &all, Closer &closer, UnionFind &parts,
-                 const PlanarMap &map, double closeGap)
+void closeMouths(const StrokeSoup &soup, const std::vector<End> &ends, Closer &closer,
+                 UnionFind &parts, const PlanarMap &map, double closeGap)
 {
+    const std::vector<Mouth> mouths = mouthCandidates(soup, ends, closer);
+    if (mouths.empty())
+        return;
     UnionFind chains = endChains(soup, closeGap);
+    std::optional<std::vector<Candidate>> links; // the gaps that may join a mouth's sides
+    double inked = 0.0;
+    for (const SoupStroke &stroke : soup.strokes())
+        inked += stroke.length;
     int trials = 0;
-    for (const Mouth &m : mouthCandidates(soup, ends, closer)) {
+    for (const Mouth &m : mouths) {
         if (trials >= kMouthTrials)
             break;
         const End &a = ends[std::size_t(m.from)], &b = ends[std::size_t(m.to)];
@@ -559,27 +566,29 @@ void closeMouths(const StrokeSoup &soup, const std::vector<End> &ends,
             inkBeyond(soup, chains, chains.find(a.stroke), a.point, b.point, -m.inward) ||
             inkBeyond(soup, chains, chains.find(b.stroke), a.point, b.point, -m.inward))
             continue;
-        std::vector<const Candidate *> links;
+        std::vector<const Candidate *> across;
         if (!closer.connected(c)) {
-            links = linksAcross(c, all, closer, parts, ends, int(soup.strokes().size()));
-            if (links.empty())
+            if (!links)
+                links = candidates(soup, ends, kMouthLinkGap * closeGap);
+            across = linksAcross(c, *links, closer, parts, ends, int(soup.strokes().size()));
+            if (across.empty())
                 continue;
         }
         ++trials;
         std::vector<LabelledSegment> segments{{a.point, b.point, -1}};
         double closed = m.width; // the face's outline along closures, not lines
-        for (const Candidate *link : links)
-            closed += (link->to - ends[std::size_t(link->from)].point).norm();
-        for (const Candidate *link : links)
-            segments.push_back(
-                link->exact ? LabelledSegment{ends[std::size_t(link->from)].point, link->to, -1}
-                            : linkTo(ends[std::size_t(link->from)].point, link->to, -1));
+        for (const Candidate *link : across) {
+            const Eigen::Vector2d from = ends[std::size_t(link->from)].point;
+            closed += (link->to - from).norm();
+            segments.push_back(link->exact ? LabelledSegment{from, link->to, -1}
+                                           : linkTo(from, link->to, -1));
+        }
         const Eigen::Vector2d probe = 0.5 * (a.point + b.point) + 0.01 * m.width * m.inward;
         const auto trial = map.trialFace(segments, probe, kMouthSpeck * m.width * m.width);
         // The face's lines are the mouth's own outline: every stroke around it chained end
         // to end with the mouth's sides or the links' (not two lines hung from a body).
         std::vector<int> own{chains.find(a.stroke), chains.find(b.stroke)};
-        for (const Candidate *link : links)
+        for (const Candidate *link : across)
             own.insert(own.end(), {chains.find(ends[std::size_t(link->from)].stroke),
                                    chains.find(link->toStroke)});
         const bool ownOutline =
@@ -590,12 +599,10 @@ void closeMouths(const StrokeSoup &soup, const std::vector<End> &ends,
         // hung from a body) are no mouth, unless the face is the drawing's outline (a
         // trunk's two sides under the crown). One line turned back on itself (a fish's
         // tail, a leg drawn as a V) may spread, and two parallel lines (a tail) may.
-        double around = 0.0, inked = 0.0;
+        double around = 0.0;
         if (trial)
             for (int l : trial->face.labels)
                 around += soup.strokes()[std::size_t(l)].length;
-        for (const SoupStroke &stroke : soup.strokes())
-            inked += stroke.length;
         const bool spreadsApart =
             a.stroke != b.stroke && m.leansAway < kMouthTwoLines && around < kMouthOutline * inked;
         if (!trial || !ownOutline || spreadsApart ||
@@ -604,7 +611,7 @@ void closeMouths(const StrokeSoup &soup, const std::vector<End> &ends,
             trial->sharedWithBounded >= kMouthBorder * m.width ||
             m.width > kMouthWidth * 2.0 * widestInscribedRadius(trial->face.polygon))
             continue;
-        for (const Candidate *link : links)
+        for (const Candidate *link : across)
             closer.accept(*link);
         closer.accept(c, true);
     }
@@ -665,8 +672,7 @@ GapClosingResult closeGaps(const StrokeSoup &soup, double closeGap, bool mouths,
             break;
     }
     if (mouths)
-        closeMouths(soup, ends, candidates(soup, ends, kMouthLinkGap * closeGap), closer, parts,
-                    map, closeGap);
+        closeMouths(soup, ends, closer, parts, map, closeGap);
     result.closures = std::move(closer.closures);
     return result;
 }
