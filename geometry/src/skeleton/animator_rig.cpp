@@ -14,6 +14,8 @@ namespace finbook::geometry::detail {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// outlineTurning: within this share of its reach, reflex turns count against convex ones.
+constexpr double kNetTurning = 0.5;
 // The base of a limb: where the width has come down to within this fraction of the way from
 // the body's inscribed radius to the limb's.
 constexpr double kBaseDrop = 0.1;
@@ -148,14 +150,17 @@ double outlineTurning(const Polygon &contour, const Eigen::Vector2d &p, double r
                 continue;
             const Eigen::Vector2d u = v - a, w = b - v;
             const double angle = sign * std::atan2(cross2(u, w), u.dot(w));
-            turning += std::max(angle, 0.0);
+            // Near the tip a reflex turn counts against the convex ones (the pen's round cap
+            // standing out of a corner turns out and back in); further off, where a limb
+            // leaves the body, it does not.
+            turning += (v - p).norm() <= kNetTurning * reach ? angle : std::max(angle, 0.0);
         }
         if (nearest < bestDistance) {
             bestDistance = nearest;
             best = turning;
         }
     }
-    return std::min(best, 2.0 * kPi);
+    return std::clamp(best, 0.0, 2.0 * kPi);
 }
 
 namespace {

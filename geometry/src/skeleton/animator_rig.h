@@ -25,8 +25,11 @@ inline constexpr double kInsideDisk = 1.3;
 // a pointed ear about 2π/3; a box corner turns π/2.
 inline constexpr double kTipTurning = 0.65 * 3.14159265358979323846;
 
-// Convex turning (radians, reflex corners not counted) of the outline of `contour` within
-// `reach` of p: π for the cap of a finger whose centre is p, π/2 at a box corner.
+// Turning (radians) of the outline of `contour` within `reach` of p: π for the cap of a
+// finger whose centre is p, π/2 at a box corner. Reflex corners count against convex ones
+// within half the reach (a pen's round cap standing out of a corner, at the foot of a trunk
+// drawn open, turns out and back in: still a corner), not further off (where a stubby limb
+// leaves the body).
 double outlineTurning(const Polygon &contour, const Eigen::Vector2d &p, double reach);
 
 // Clean-up by default, relative to the inscribed radius: side branches that stay inside their
