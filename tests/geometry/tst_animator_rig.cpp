@@ -240,6 +240,16 @@ void TestAnimatorRig::loosePiecesHangFromNearestBone()
     QCOMPARE(int((s.parent.array() < 0).count()), 1); // one tree
     const Skeleton plain = rigOf(shape, false);
     QCOMPARE(int((plain.parent.array() < 0).count()), 2);
+    // The same head drawn 300 px away (a second figure) is not hung across open air: it
+    // keeps a tree of its own, and no bone leaves the shape.
+    const Region apart = shapeOf({{rows({{0, 0}, {0, 200}}), 60.0}, {rows({{0, -330}}), 50.0}});
+    QCOMPARE(int(apart.size()), 2);
+    const Skeleton two = rigOf(apart);
+    QVERIFY(isValidSkeleton(two));
+    QCOMPARE(int((two.parent.array() < 0).count()), 2);
+    for (int j = 0; j < two.jointCount(); ++j)
+        if (two.parent(j) >= 0)
+            QVERIFY(std::abs(two.joints(j, 1) - two.joints(two.parent(j), 1)) < 250.0);
 }
 
 void TestAnimatorRig::crossOfTwoObjectsJoins()

@@ -8,11 +8,57 @@
 namespace finbook::geometry::detail {
 namespace {
 
+// Pieces nearer than this many radii (the thicker piece's widest) are joined.
+constexpr double kPieceReach = 1.0;
+
 double segmentPointT(const Eigen::Vector2d &p, const Eigen::Vector2d &a, const Eigen::Vector2d &b)
 {
     const Eigen::Vector2d ab = b - a;
     const double l2 = ab.squaredNorm();
     return l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+}
+
+double ringDistance(const Eigen::MatrixX2d &a, const Eigen::MatrixX2d &b)
+{
+    double best = std::numeric_limits<double>::infinity();
+    const auto oneWay = [&](const Eigen::MatrixX2d &from, const Eigen::MatrixX2d &to) {
+        for (Eigen::Index i = 0; i < from.rows(); ++i) {
+            const Eigen::Vector2d p = from.row(i).transpose();
+            for (Eigen::Index k = 0, n = to.rows(); k < n; ++k) {
+                const Eigen::Vector2d s0 = to.row(k).transpose();
+                const Eigen::Vector2d s1 = to.row((k + 1) % n).transpose();
+                best = std::min(best, (p - (s0 + segmentPointT(p, s0, s1) * (s1 - s0))).norm());
+            }
+        }
+    };
+    oneWay(a, b);
+    oneWay(b, a);
+    return best;
+}
+
+// Whether the piece (polygon) of `child` touches or nearly touches a polygon of the attached
+// joints: their outlines within kPieceReach of the thicker piece's widest radius.
+bool nearlyTouches(const JointGraph &graph, const std::vector<int> &polygonOf,
+                   const std::vector<char> &attached, int child, const Region &contour)
+{
+    const int piece = polygonOf[std::size_t(child)];
+    if (piece < 0 || std::size_t(piece) >= contour.size())
+        return true; // no outline to measure: as before, joined
+    std::vector<double> widest(contour.size(), 0.0);
+    std::vector<char> reached(contour.size(), 0);
+    for (int j = 0; j < graph.size(); ++j) {
+        const int p = polygonOf[std::size_t(j)];
+        if (p < 0 || std::size_t(p) >= contour.size())
+            continue;
+        widest[std::size_t(p)] = std::max(widest[std::size_t(p)], graph.radius[std::size_t(j)]);
+        reached[std::size_t(p)] |= attached[std::size_t(j)];
+    }
+    for (std::size_t p = 0; p < contour.size(); ++p)
+        if (reached[p] && int(p) != piece &&
+            ringDistance(contour[std::size_t(piece)].outer, contour[p].outer) <=
+                kPieceReach * std::max(widest[std::size_t(piece)], widest[p]))
+            return true;
+    return false;
 }
 
 } // namespace
@@ -36,7 +82,7 @@ int thickestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, in
     return best;
 }
 
-void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root)
+void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root, const Region &contour)
 {
     if (root < 0 || root >= graph.size())
         return;
@@ -89,7 +135,10 @@ void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root)
         }
         if (child < 0)
             return;
+        const bool near = nearlyTouches(graph, polygonOf, attached, child, contour);
         attachTree(child);
+        if (!near)
+            continue; // a tree of its own; the pieces near it hang from it
         int hang = bestT < 0.5 ? from : to;
         const double length = (graph.pos[std::size_t(to)] - graph.pos[std::size_t(from)]).norm();
         const double fromEnd = std::min(bestT, 1.0 - bestT) * length;

@@ -146,7 +146,7 @@ Skeleton rooted(const DenseGraph &bones, const RawSkeleton &raw, const RefineOpt
                          ? nearestJoint(graph, polygonOf, -1, target)
                          : thickestJoint(graph, polygonOf, -1);
     if (options.animatorRig)
-        joinPieces(graph, polygonOf, root);
+        joinPieces(graph, polygonOf, root, raw.contour);
     return orderedSkeleton(graph, roots, root);
 }
 
