@@ -8,27 +8,24 @@ std::unordered_set<Id> idsIn(const LoadedDocument &doc)
 {
     std::unordered_set<Id> used;
     const auto use = [&used](Id id) { used.insert(id); };
-    const auto useRig = [&use](const Rig &rig) {
-        for (const Pin &p : rig.pins)
+    // A swap drawing and an object alike: its id, its strokes', its pins' and its join's.
+    const auto useDrawing = [&use](const auto &drawing) {
+        use(drawing.id);
+        for (const Stroke &s : drawing.strokes)
+            use(s.id);
+        for (const Pin &p : drawing.rig.pins)
             use(p.id);
-        use(rig.skeleton.join.parent);
+        use(drawing.rig.skeleton.join.parent);
     };
     for (const SwapSet &set : doc.swapSets) {
         use(set.id);
-        for (const SwapDrawing &d : set.drawings) {
-            use(d.id);
-            for (const Stroke &s : d.strokes)
-                use(s.id);
-            useRig(d.rig);
-        }
+        for (const SwapDrawing &d : set.drawings)
+            useDrawing(d);
     }
     for (const Frame &f : doc.frames) {
         use(f.id);
         for (const StrokeGroup &g : f.groups) {
-            use(g.id);
-            for (const Stroke &s : g.strokes)
-                use(s.id);
-            useRig(g.rig);
+            useDrawing(g);
             for (const Fill &fill : g.fills) {
                 std::for_each(fill.strokes.begin(), fill.strokes.end(), use);
                 for (const FillPlace &place : fill.more)

@@ -1,5 +1,6 @@
 // The root at the thickest part and separate pieces of one object joined (issue 21).
 #include "animator_rig.h"
+#include "skeleton_contour.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,21 +19,16 @@ double segmentPointT(const Eigen::Vector2d &p, const Eigen::Vector2d &a, const E
     return l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
 }
 
-double ringDistance(const Eigen::MatrixX2d &a, const Eigen::MatrixX2d &b)
+// The distance between the outer outlines of two polygons, vertex to edge both ways (the
+// pieces of one region never cross, so no crossing test is needed).
+double outlineDistance(const Polygon &a, const Polygon &b)
 {
+    const ContourIndex toA(Polygon{a.outer, {}}), toB(Polygon{b.outer, {}});
     double best = std::numeric_limits<double>::infinity();
-    const auto oneWay = [&](const Eigen::MatrixX2d &from, const Eigen::MatrixX2d &to) {
-        for (Eigen::Index i = 0; i < from.rows(); ++i) {
-            const Eigen::Vector2d p = from.row(i).transpose();
-            for (Eigen::Index k = 0, n = to.rows(); k < n; ++k) {
-                const Eigen::Vector2d s0 = to.row(k).transpose();
-                const Eigen::Vector2d s1 = to.row((k + 1) % n).transpose();
-                best = std::min(best, (p - (s0 + segmentPointT(p, s0, s1) * (s1 - s0))).norm());
-            }
-        }
-    };
-    oneWay(a, b);
-    oneWay(b, a);
+    for (Eigen::Index i = 0; i < a.outer.rows(); ++i)
+        best = std::min(best, toB.distance(a.outer.row(i).transpose()));
+    for (Eigen::Index i = 0; i < b.outer.rows(); ++i)
+        best = std::min(best, toA.distance(b.outer.row(i).transpose()));
     return best;
 }
 
@@ -55,7 +51,7 @@ bool nearlyTouches(const JointGraph &graph, const std::vector<int> &polygonOf,
     }
     for (std::size_t p = 0; p < contour.size(); ++p)
         if (reached[p] && int(p) != piece &&
-            ringDistance(contour[std::size_t(piece)].outer, contour[p].outer) <=
+            outlineDistance(contour[std::size_t(piece)], contour[p]) <=
                 kPieceReach * std::max(widest[std::size_t(piece)], widest[p]))
             return true;
     return false;
