@@ -501,6 +501,14 @@ void TestRegions::mittenOpenAtTheWristIsClosed()
     // The setting turns it off, as "don't close gaps" turns every closure off.
     QVERIFY(regionsOf({{outline, 3.0}}, 10.0, false).faces.empty());
     QVERIFY(regionsOf({{outline, 3.0}}, 0.0).faces.empty());
+    // Drawn in one line flaring out at the wrist (each end leans 135° away from the other
+    // across the mouth), the hand is still closed.
+    const Eigen::MatrixX2d flared = polyline(
+        {{-20, 170}, {0, 150}, {0, 20}, {10, 0}, {70, 0}, {80, 20}, {80, 150}, {100, 170}});
+    const Regions r2 = regionsOf({{flared, 3.0}}, 10.0);
+    checkRegions(r2, 1);
+    QCOMPARE(mouthCount(r2), 1);
+    QVERIFY(faceAt(r2, 40, 160) >= 0);
 }
 
 void TestRegions::treeOpenAtTheFootIsClosedWithItsCrown()

@@ -388,19 +388,20 @@ bool acceptRing(Closer &closer, const std::vector<Candidate> &deferred, UnionFin
 }
 
 // Mouths (regions.h): the facing angle, the face's shape against the mouth's width.
-constexpr double kMouthLeansAway = -0.35; // cos of ~110°: an end may lean this far away
-constexpr double kMouthTwoLines = -0.1;   // as above for the sides of two strokes: ~95°,
-constexpr double kMouthOutline = 0.6;     // unless this share of the ink is around the face
-constexpr double kMouthHeadOn = 1.0;      // the two cosines summing above this: a gap, head on
-constexpr double kMouthDepth = 0.4;       // the face's area ≥ this · d²
-constexpr double kMouthShare = 0.3;       // chord and links ≤ this share of the face's outline
-constexpr double kMouthWidth = 2.0;       // d ≤ this · the widest inscribed circle's diameter
-constexpr double kMouthBorder = 0.5;      // the face borders closed faces along < this · d,
-constexpr double kMouthSpeck = 0.1;       // counting those of at least this · d² only
-constexpr double kMouthBeyond = 0.6;      // nothing drawn this · d beyond the chord
-constexpr double kMouthLinkGap = 2.0;     // a gap joining a mouth's sides: ≤ this · closeGap
-constexpr int kMouthTrials = 24;          // faces tried per drawing at most (each copies the map)
-constexpr int kInscribedGrid = 32;        // samples per side for the widest inscribed circle
+constexpr double kMouthLeansAway = -0.35;   // cos of ~110°: an end may lean this far away,
+constexpr double kMouthOneLineLeans = -0.8; // ~145° when both are one line's (a flared wrist)
+constexpr double kMouthTwoLines = -0.1;     // as above for the sides of two strokes: ~95°,
+constexpr double kMouthOutline = 0.6;       // unless this share of the ink is around the face
+constexpr double kMouthHeadOn = 1.0;        // the two cosines summing above this: a gap, head on
+constexpr double kMouthDepth = 0.4;         // the face's area ≥ this · d²
+constexpr double kMouthShare = 0.3;         // chord and links ≤ this share of the face's outline
+constexpr double kMouthWidth = 2.0;         // d ≤ this · the widest inscribed circle's diameter
+constexpr double kMouthBorder = 0.5;        // the face borders closed faces along < this · d,
+constexpr double kMouthSpeck = 0.1;         // counting those of at least this · d² only
+constexpr double kMouthBeyond = 0.6;        // nothing drawn this · d beyond the chord
+constexpr double kMouthLinkGap = 2.0;       // a gap joining a mouth's sides: ≤ this · closeGap
+constexpr int kMouthTrials = 24;            // faces tried per drawing at most (each copies the map)
+constexpr int kInscribedGrid = 32;          // samples per side for the widest inscribed circle
 
 // The radius of (about) the widest circle inside the polygon: the largest distance to its
 // outline over a grid of points inside it.
@@ -462,7 +463,8 @@ std::vector<Mouth> mouthCandidates(const StrokeSoup &soup, const std::vector<End
             };
             const Eigen::Vector2d ta = leaving(a), tb = leaving(b);
             const double ca = ta.dot(u), cb = -tb.dot(u);
-            if (ca < kMouthLeansAway || cb < kMouthLeansAway || ca + cb > kMouthHeadOn)
+            const double lean = a.stroke == b.stroke ? kMouthOneLineLeans : kMouthLeansAway;
+            if (ca < lean || cb < lean || ca + cb > kMouthHeadOn)
                 continue;
             const Eigen::Vector2d n(-u.y(), u.x());
             const double side = (ta + tb).dot(n);

@@ -16,7 +16,9 @@
 // Then open *mouths* are closed, as people read an outline drawn open at a wrist, at the foot
 // of a trunk or at a tail as a closed shape. Two free ends still left that lie side by side
 // are joined by the chord between them when:
-// - facing angle: neither leans away from the other by more than ~110° from the chord, and
+// - facing angle: neither leans away from the other by more than ~110° from the chord (~145°
+//   when both ends are one line's: a hand or an arm drawn in one stroke, flaring at the
+//   wrist or shoulder), and
 //   they do not point at each other head-on (that is a gap, for the gap distance to decide);
 //   two separate lines that spread apart (legs, antennae, whiskers hung from a body) are
 //   taken only when the face they close holds most of the drawing's ink on its outline (a
