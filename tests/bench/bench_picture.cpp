@@ -1,13 +1,14 @@
 // finbook-bench picture [--silhouettes DIR [--render-to DIR]] [--redraws N] [--vertices N]
-// [FILE...]: pictures as deformable objects (issue 51). Per layer of each PNG or OpenRaster
-// file: read time, alpha trace time and outline size, quality mesh time and size (the outline
-// meshed as object shapes are, with MeshOptions::targetVertices = --vertices, 2000 by default;
-// the mesher lands at 1.2-3 times that), the rest pose drawn through the mesh against the
-// original pixels (PSNR), the redraw time of a posed picture into a 1920 × 1080 canvas (median
-// and p99 over --redraws), and the memory a picture holds (texture + mesh). --silhouettes
-// renders each shape of shared/data/silhouettes as a 1024 × 1024 RGBA picture with a painted
-// texture and an anti-aliased edge (kept in --render-to's folder), and benches those too. One
-// JSON object per layer per line; never gates.
+// [--view-turn DEG] [FILE...]: pictures as deformable objects (issue 51). Per layer of each PNG
+// or OpenRaster file: read time, alpha trace time and outline size, quality mesh time and size
+// (the outline meshed as object shapes are, with MeshOptions::targetVertices = --vertices, 2000
+// by default; the mesher lands at 1.2-3 times that), the rest pose drawn through the mesh
+// against the original pixels (PSNR), the redraw time of a posed picture into a 1920 × 1080
+// canvas (median and p99 over --redraws; --view-turn DEG turns the canvas view by DEG degrees),
+// and the memory a picture holds (texture + mesh). --silhouettes renders each shape of
+// shared/data/silhouettes as a 1024 × 1024 RGBA picture with a painted texture and an
+// anti-aliased edge (kept in --render-to's folder), and benches those too. One JSON object per
+// layer per line; never gates.
 #include "bench.h"
 
 #include <finbook/geometry/object_mesh.h>
@@ -56,6 +57,7 @@ double processCpuMs()
 struct PictureBenchOptions {
     int redraws = 200;
     int vertices = 2000;
+    double viewTurn = 0.0; // degrees the canvas view is turned by (View → Rotate)
 };
 
 // A painted texture: two colour gradients, soft stripes and a little grain, like a painted
@@ -158,11 +160,12 @@ Eigen::MatrixX2d posed(const Eigen::MatrixX2d &V, double amplitude)
 // Redraws of the posed picture into a 1920 × 1080 canvas: drawTexturedMesh alone and with the
 // canvas cleared first (what a canvas repaint does).
 void benchRedraw(QJsonObject &row, const model::PictureLayer &layer,
-                 const geometry::ObjectMesh &mesh, int redraws)
+                 const geometry::ObjectMesh &mesh, int redraws, double viewTurn)
 {
     QImage canvas(1920, 1080, QImage::Format_ARGB32_Premultiplied);
-    const QTransform view = QTransform::fromTranslate(960 - layer.image.width() / 2.0,
-                                                      540 - layer.image.height() / 2.0);
+    QTransform view; // the picture's centre in the canvas's middle, turned about it
+    view.translate(960, 540).rotate(viewTurn).translate(-layer.image.width() / 2.0,
+                                                        -layer.image.height() / 2.0);
     std::vector<double> draw, redraw, cpu;
     for (int i = 0; i < redraws; ++i) {
         const Eigen::MatrixX2d V = posed(mesh.V, 4.0 + (i % 10)); // a drag: a new pose each time
@@ -234,7 +237,9 @@ QJsonObject benchLayer(const model::PictureLayer &layer, const PictureBenchOptio
     row[QStringLiteral("mesh_vertices")] = qint64(mesh->V.rows());
     row[QStringLiteral("mesh_triangles")] = qint64(mesh->F.rows());
     benchRest(row, layer, *mesh);
-    benchRedraw(row, layer, *mesh, options.redraws);
+    benchRedraw(row, layer, *mesh, options.redraws, options.viewTurn);
+    if (options.viewTurn != 0.0)
+        row[QStringLiteral("view_turn_deg")] = options.viewTurn;
     // uv and V (n × 2 doubles each) and F (m × 3 ints): what a posed picture object holds.
     const qint64 meshBytes = mesh->V.rows() * 2 * 8 * 2 + mesh->F.rows() * 3 * 4;
     row[QStringLiteral("texture_bytes")] = qint64(layer.image.sizeInBytes());
@@ -322,6 +327,8 @@ int benchPicture(const QStringList &args)
             finbook = args[++i];
         else if (args[i] == QLatin1String("--vertices") && i + 1 < args.size())
             options.vertices = std::max(10, args[++i].toInt());
+        else if (args[i] == QLatin1String("--view-turn") && i + 1 < args.size())
+            options.viewTurn = args[++i].toDouble();
         else
             files << args[i];
     }
@@ -339,7 +346,8 @@ int benchPicture(const QStringList &args)
     }
     if (files.isEmpty()) {
         std::fprintf(stderr, "usage: finbook-bench picture [--silhouettes DIR [--render-to DIR]] "
-                             "[--redraws N] [--vertices N] [--finbook OUT] FILE...\n");
+                             "[--redraws N] [--vertices N] [--view-turn DEG] [--finbook OUT] "
+                             "FILE...\n");
         return 2;
     }
     if (!finbook.isEmpty())
@@ -353,7 +361,7 @@ int benchPicture(const QStringList &args)
 
 FINBOOK_BENCH("picture",
               "[--silhouettes DIR [--render-to DIR]] [--redraws N] [--vertices N] "
-              "[--finbook OUT] FILE...  "
+              "[--view-turn DEG] [--finbook OUT] FILE...  "
               "pictures (PNG, .ora) as "
               "deformable objects: trace, mesh, rest PSNR, 1080p redraw",
               benchPicture);

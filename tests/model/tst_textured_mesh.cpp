@@ -212,6 +212,7 @@ private slots:
     void opacityAndSourceOver();
     void brokenInputSkipped();
     void drawingOrderKeepsTheTrianglesAndThePicture();
+    void kernelsDrawTheSamePixels();
 };
 
 void TestTexturedMesh::restReproducesPicture()
@@ -490,6 +491,78 @@ void TestTexturedMesh::drawingOrderKeepsTheTrianglesAndThePicture()
     const Eigen::MatrixX3i brokenOrdered = drawingOrder(g.V, broken);
     QCOMPARE(Eigen::RowVector3i(brokenOrdered.row(brokenOrdered.rows() - 1)),
              Eigen::RowVector3i(broken.row(0)));
+}
+
+void TestTexturedMesh::kernelsDrawTheSamePixels()
+{
+#if defined(__x86_64__)
+    QVERIFY(texturedMeshKernelAvailable(TexturedMeshKernel::Sse2)); // every x86-64 has SSE2
+#endif
+    // A texture of random premultiplied pixels: opaque, translucent and clear ones mixed, and
+    // whole opaque and clear patches (the wide kernels' shortcuts).
+    std::mt19937 random(7);
+    QImage texture(97, 83, QImage::Format_ARGB32_Premultiplied);
+    for (int y = 0; y < texture.height(); ++y)
+        for (int x = 0; x < texture.width(); ++x) {
+            const bool patch = (x / 24 + y / 20) % 3 == 0, clear = (x / 24 + y / 20) % 3 == 1;
+            const int a = patch ? 255 : clear && x % 5 ? 0 : int(random() % 256);
+            texture.setPixel(x, y,
+                             qRgba(int(random() % (a + 1)), int(random() % (a + 1)),
+                                   int(random() % (a + 1)), a));
+        }
+    QImage background(230, 190, QImage::Format_ARGB32_Premultiplied);
+    for (int y = 0; y < background.height(); ++y)
+        for (int x = 0; x < background.width(); ++x) {
+            const int a = x < 80 ? 255 : int(random() % 256);
+            background.setPixel(x, y,
+                                qRgba(int(random() % (a + 1)), int(random() % (a + 1)),
+                                      int(random() % (a + 1)), a));
+        }
+    // The mesh reaches past the texture on two sides (clamped and clear samples), is posed
+    // with folds, and is drawn magnified (long spans), shrunk, turned, and off the target's
+    // right edge (spans that end at the last column).
+    const Grid g = grid(105, 90, 9.0, {-4.0, -3.0});
+    struct Case {
+        QTransform view;
+        double fold, opacity;
+    };
+    QTransform turned;
+    turned.translate(120, -20).rotate(37).scale(1.7, 1.4);
+    const std::array<Case, 5> cases = {{{QTransform::fromScale(2.3, 2.1), 0.0, 1.0},
+                                        {QTransform::fromTranslate(150, 40), 6.0, 1.0},
+                                        {turned, 3.0, 0.6},
+                                        {QTransform::fromScale(0.55, 0.6), 2.0, 0.85},
+                                        {QTransform(), 0.0, 1.0}}};
+    int compared = 0;
+    for (const Case &c : cases) {
+        Eigen::MatrixX2d V = g.V;
+        std::uniform_real_distribution<double> move(-c.fold, c.fold);
+        for (Eigen::Index i = 0; i < V.rows(); ++i)
+            V.row(i) += Eigen::RowVector2d(move(random), move(random));
+        QImage reference = background;
+        drawTexturedMesh(reference, c.view, texture, g.V, V, g.F, c.opacity,
+                         TexturedMeshKernel::Scalar);
+        QVERIFY(reference != background);
+        for (const auto kernel :
+             {TexturedMeshKernel::Sse2, TexturedMeshKernel::Avx2, TexturedMeshKernel::Automatic}) {
+            if (!texturedMeshKernelAvailable(kernel))
+                continue;
+            QImage drawn = background;
+            drawTexturedMesh(drawn, c.view, texture, g.V, V, g.F, c.opacity, kernel);
+            for (int y = 0; y < drawn.height(); ++y)
+                for (int x = 0; x < drawn.width(); ++x)
+                    if (drawn.pixel(x, y) != reference.pixel(x, y))
+                        QFAIL(qPrintable(QStringLiteral("kernel %1 differs at (%2, %3): %4 "
+                                                        "against %5")
+                                             .arg(int(kernel))
+                                             .arg(x)
+                                             .arg(y)
+                                             .arg(drawn.pixel(x, y), 8, 16)
+                                             .arg(reference.pixel(x, y), 8, 16)));
+            ++compared;
+        }
+    }
+    QVERIFY(compared >= int(cases.size())); // at least the automatic kernel each time
 }
 
 QTEST_GUILESS_MAIN(TestTexturedMesh)

@@ -147,8 +147,26 @@ bool uvPlane(const MeshPoint &a, const MeshPoint &b, const MeshPoint &c, const d
            std::isfinite(p.dvdy) && std::isfinite(p.u0) && std::isfinite(p.v0);
 }
 
-void drawTriangle(const Raster &r, MeshPoint a, MeshPoint b, MeshPoint c, const double *ua,
-                  const double *ub, const double *uc)
+// Whether every pixel a triangle covers samples inside the texture's interior (where all four
+// bilinear neighbours exist, u ∈ [½, w − ½)), with a margin for the pixel centres its snapped
+// corners admit beyond the exact triangle and for rounding: then its spans skip the test.
+bool samplesInside(const Raster &r, const UvPlane &p, const double *ua, const double *ub,
+                   const double *uc)
+{
+    const double marginU = 0.01 + (std::abs(p.dudx) + std::abs(p.dudy)) / 64.0;
+    const double marginV = 0.01 + (std::abs(p.dvdx) + std::abs(p.dvdy)) / 64.0;
+    for (const double *t : {ua, ub, uc})
+        if (!(t[0] >= 0.5 + marginU && t[0] <= r.texWidth - 0.5 - marginU &&
+              t[1] >= 0.5 + marginV && t[1] <= r.texHeight - 0.5 - marginV))
+            return false;
+    return true;
+}
+
+// Draws triangle abc over the rows [r.bandTop, r.bandBottom), its spans by Group.
+template <class Group>
+[[gnu::always_inline]] inline void drawTriangle(const Raster &r, MeshPoint a, MeshPoint b,
+                                                MeshPoint c, const double *ua, const double *ub,
+                                                const double *uc)
 {
     const std::int64_t area2 = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     if (area2 == 0)
@@ -175,6 +193,8 @@ void drawTriangle(const Raster &r, MeshPoint a, MeshPoint b, MeshPoint c, const 
         return;
     const std::int64_t sampleY = y0 * kSubpixel + kHalfPixel;
     Edge edges[3] = {Edge(a, b, sampleY), Edge(b, c, sampleY), Edge(c, a, sampleY)};
+    const Group group(fixed, r.alpha);
+    const bool inside = samplesInside(r, plane, ua, ub, uc);
     for (std::int64_t y = y0; y <= y1; ++y) {
         std::int64_t lo = x0, hi = x1;
         for (Edge &e : edges) {
@@ -182,7 +202,7 @@ void drawTriangle(const Raster &r, MeshPoint a, MeshPoint b, MeshPoint c, const 
             e.nextRow();
         }
         if (lo <= hi)
-            drawSpan(r, fixed, int(y), int(lo), int(hi));
+            drawSpanWith(r, fixed, int(y), int(lo), int(hi), group, inside);
     }
 }
 
@@ -250,25 +270,142 @@ FaceStrips faceStrips(const std::vector<MeshPoint> &points, const Eigen::MatrixX
     return strips;
 }
 
-// Draws the rows [band.bandTop, band.bandBottom) strip by strip: the texels and target pixels
-// a strip's triangles touch stay in the cache while its neighbours are drawn (in the order of
-// F, triangles far apart in the picture follow each other). Each pixel still sees its
+// The cache lines a strip will read: its triangles' texels (the box of their uv) and target
+// pixels (the box of their corners), fetched into the cache a few at a time while the strip
+// before it is drawn, so that they are not waited for one miss at a time.
+class StripPrefetch {
+public:
+    StripPrefetch(const Raster &r, const std::vector<Eigen::Index> &faces,
+                  const std::vector<MeshPoint> &points, const Eigen::MatrixX2d &uv,
+                  const Eigen::MatrixX3i &F, int top, int bottom)
+        : r_(r)
+    {
+        double u0 = kHuge, u1 = -kHuge, v0 = kHuge, v1 = -kHuge, x0 = kHuge, x1 = -kHuge;
+        for (const Eigen::Index f : faces)
+            for (int c = 0; c < 3; ++c) {
+                const int i = F(f, c);
+                u0 = std::min(u0, uv(i, 0));
+                u1 = std::max(u1, uv(i, 0));
+                v0 = std::min(v0, uv(i, 1));
+                v1 = std::max(v1, uv(i, 1));
+                x0 = std::min(x0, points[std::size_t(i)].fx);
+                x1 = std::max(x1, points[std::size_t(i)].fx);
+            }
+        if (faces.empty())
+            return;
+        texLeft_ = int(std::clamp(std::floor(u0) - 1.0, 0.0, double(r.texWidth - 1)));
+        texRight_ = int(std::clamp(std::ceil(u1) + 1.0, 0.0, double(r.texWidth - 1)));
+        texRow_ = int(std::clamp(std::floor(v0) - 1.0, 0.0, double(r.texHeight - 1)));
+        texBottom_ = int(std::clamp(std::ceil(v1) + 1.0, 0.0, double(r.texHeight - 1)));
+        left_ = int(std::clamp(std::floor(x0) - 1.0, 0.0, double(r.width - 1)));
+        right_ = int(std::clamp(std::ceil(x1) + 1.0, 0.0, double(r.width - 1)));
+        row_ = top;
+        bottom_ = bottom - 1;
+        const int targetLines = (bottom_ - row_ + 1) * ((right_ - left_) / 16 + 2);
+        const int textureLines = (texBottom_ - texRow_ + 1) * ((texRight_ - texLeft_) / 16 + 2);
+        // A box of uv much larger than the strip (a turned or shrunk picture) holds mostly
+        // texels the strip never reads: those are left to the processor.
+        if (textureLines > 4 * targetLines + 64)
+            texBottom_ = texRow_ - 1;
+        lines_ = targetLines + (texBottom_ >= texRow_ ? textureLines : 0);
+    }
+    int lines() const { return lines_; }
+    // Fetches the next n lines (texture rows first, then target rows).
+    void fetch(int n)
+    {
+        for (; n > 0 && texRow_ <= texBottom_; --n) {
+            __builtin_prefetch(
+                r_.texture + qsizetype(texRow_) * r_.textureStride + texLeft_ + texAt_, 0, 2);
+            if (advance(texAt_, texLeft_, texRight_))
+                ++texRow_;
+        }
+        for (; n > 0 && row_ <= bottom_; --n) {
+            __builtin_prefetch(r_.target + qsizetype(row_) * r_.targetStride + left_ + at_, 1, 2);
+            if (advance(at_, left_, right_))
+                ++row_;
+        }
+    }
+
+private:
+    static constexpr double kHuge = 1e300;
+    // Steps to the next line (16 pixels on) of a row of pixels [left, right], its last pixel
+    // last; true when the row is done.
+    static bool advance(int &at, int left, int right)
+    {
+        if (left + at >= right) {
+            at = 0;
+            return true;
+        }
+        at = std::min(at + 16, right - left);
+        return false;
+    }
+    const Raster &r_;
+    int texLeft_ = 0, texRight_ = -1, texRow_ = 0, texBottom_ = -1, texAt_ = 0;
+    int left_ = 0, right_ = -1, row_ = 0, bottom_ = -1, at_ = 0;
+    int lines_ = 0;
+};
+
+// Draws the rows [band.bandTop, band.bandBottom) strip by strip, spans by Group: the texels and
+// target pixels a strip's triangles touch stay in the cache while its neighbours are drawn (in the
+// order of F, triangles far apart in the picture follow each other). Each pixel still sees its
 // triangles in the order of F.
-void drawStrips(const Raster &band, const FaceStrips &strips, const std::vector<MeshPoint> &points,
-                const Eigen::MatrixX2d &uv, const Eigen::MatrixX3i &F)
+template <class Group>
+[[gnu::always_inline]] inline void
+drawStripsWith(const Raster &band, const FaceStrips &strips, const std::vector<MeshPoint> &points,
+               const Eigen::MatrixX2d &uv, const Eigen::MatrixX3i &F)
 {
-    for (int strip = band.bandTop / kStripRows; strip * kStripRows < band.bandBottom; ++strip) {
+    const int first = band.bandTop / kStripRows;
+    for (int strip = first; strip * kStripRows < band.bandBottom; ++strip) {
         Raster r = band;
         r.bandTop = std::max(band.bandTop, strip * kStripRows);
         r.bandBottom = std::min(band.bandBottom, (strip + 1) * kStripRows);
-        for (const Eigen::Index f : strips[std::size_t(strip)]) {
+        const auto &faces = strips[std::size_t(strip)];
+        const int nextTop = (strip + 1) * kStripRows;
+        StripPrefetch next(band,
+                           nextTop < band.bandBottom ? strips[std::size_t(strip + 1)]
+                                                     : std::vector<Eigen::Index>(),
+                           points, uv, F, nextTop, std::min(band.bandBottom, nextTop + kStripRows));
+        const int perFace = faces.empty() ? 0 : next.lines() / int(faces.size()) + 1;
+        for (const Eigen::Index f : faces) {
+            next.fetch(perFace);
             const int i = F(f, 0), j = F(f, 1), k = F(f, 2);
             const double ua[2] = {uv(i, 0), uv(i, 1)}, ub[2] = {uv(j, 0), uv(j, 1)},
                          uc[2] = {uv(k, 0), uv(k, 1)};
-            drawTriangle(r, points[std::size_t(i)], points[std::size_t(j)], points[std::size_t(k)],
-                         ua, ub, uc);
+            drawTriangle<Group>(r, points[std::size_t(i)], points[std::size_t(j)],
+                                points[std::size_t(k)], ua, ub, uc);
         }
     }
+}
+
+#if defined(FINBOOK_TEXTURE_AVX2)
+__attribute__((target("avx2"))) void drawStripsAvx2(const Raster &band, const FaceStrips &strips,
+                                                    const std::vector<MeshPoint> &points,
+                                                    const Eigen::MatrixX2d &uv,
+                                                    const Eigen::MatrixX3i &F)
+{
+    drawStripsWith<EightAtOnce>(band, strips, points, uv, F);
+}
+#endif
+
+// drawStripsWith the kernel band.kernel names.
+void drawStrips(const Raster &band, const FaceStrips &strips, const std::vector<MeshPoint> &points,
+                const Eigen::MatrixX2d &uv, const Eigen::MatrixX3i &F)
+{
+    switch (band.kernel) {
+    case SpanKernel::Avx2:
+#if defined(FINBOOK_TEXTURE_AVX2)
+        drawStripsAvx2(band, strips, points, uv, F);
+        return;
+#endif
+    case SpanKernel::Sse2:
+#if defined(__SSE2__)
+        drawStripsWith<FourAtOnce>(band, strips, points, uv, F);
+        return;
+#endif
+    case SpanKernel::Scalar:
+        break;
+    }
+    drawStripsWith<OneByOne>(band, strips, points, uv, F);
 }
 
 } // namespace
@@ -299,9 +436,25 @@ Eigen::MatrixX3i drawingOrder(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i 
     return ordered;
 }
 
+bool texturedMeshKernelAvailable(TexturedMeshKernel kernel)
+{
+    using picture_detail::SpanKernel;
+    const SpanKernel widest = picture_detail::widestSpanKernel();
+    switch (kernel) {
+    case TexturedMeshKernel::Automatic:
+    case TexturedMeshKernel::Scalar:
+        return true;
+    case TexturedMeshKernel::Sse2:
+        return widest != SpanKernel::Scalar;
+    case TexturedMeshKernel::Avx2:
+        return widest == SpanKernel::Avx2;
+    }
+    return false;
+}
+
 void drawTexturedMesh(QImage &target, const QTransform &view, const QImage &texture,
                       const Eigen::MatrixX2d &uv, const Eigen::MatrixX2d &V,
-                      const Eigen::MatrixX3i &F, double opacity)
+                      const Eigen::MatrixX3i &F, double opacity, TexturedMeshKernel kernel)
 {
     using namespace picture_detail;
     if (target.isNull() || texture.isNull() || uv.rows() != V.rows() || !(opacity > 0.0))
@@ -323,6 +476,11 @@ void drawTexturedMesh(QImage &target, const QTransform &view, const QImage &text
     r.alpha = std::uint32_t(std::lround(std::min(opacity, 1.0) * 255.0));
     if (r.alpha == 0)
         return;
+    r.kernel = widestSpanKernel();
+    if (kernel == TexturedMeshKernel::Scalar)
+        r.kernel = SpanKernel::Scalar;
+    else if (kernel == TexturedMeshKernel::Sse2 && texturedMeshKernelAvailable(kernel))
+        r.kernel = SpanKernel::Sse2;
     const std::vector<MeshPoint> points = mapVertices(view, V, uv);
     const FaceStrips strips = faceStrips(points, F, r.height);
     const auto [top, bottom] = coveredRows(points, r.height);

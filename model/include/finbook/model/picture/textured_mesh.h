@@ -24,6 +24,15 @@
 
 namespace finbook::model {
 
+// The pixel kernels drawTexturedMesh can draw with. They give the same pixels bit for bit;
+// the wide ones sample and composite 4 (SSE2) or 8 (AVX2) neighbouring pixels at once where
+// all of them sample inside the texture. Automatic takes the widest the build and the
+// processor have.
+enum class TexturedMeshKernel { Automatic, Scalar, Sse2, Avx2 };
+
+// Whether `kernel` can run here (Automatic and Scalar always can).
+bool texturedMeshKernelAvailable(TexturedMeshKernel kernel);
+
 // target: Format_ARGB32_Premultiplied (converted in place when it is not).
 // view: canvas pixels → target pixels (affine or projective: each vertex is mapped, the
 //   triangle between them is straight on the target).
@@ -33,13 +42,15 @@ namespace finbook::model {
 //   pixels inside [0, w] × [0, h]; outside that rectangle the texture is transparent.
 // V: n×2 posed vertex positions in canvas pixels. F: m×3 vertex indices into V and uv.
 // opacity in [0, 1] scales the texture's premultiplied colour.
+// kernel: an unavailable one draws as Automatic.
 // Skipped without harm: faces with an index out of range, a non-finite V or uv, zero area on
 // the target, or a vertex farther than 2^21 px from the target's origin after `view`; faces
 // wholly off the target cost only their bounding-box test. At rest (V == uv, identity view,
 // opacity 1, a transparent target) the texture is reproduced exactly where the mesh covers it.
 void drawTexturedMesh(QImage &target, const QTransform &view, const QImage &texture,
                       const Eigen::MatrixX2d &uv, const Eigen::MatrixX2d &V,
-                      const Eigen::MatrixX3i &F, double opacity = 1.0);
+                      const Eigen::MatrixX3i &F, double opacity = 1.0,
+                      TexturedMeshKernel kernel = TexturedMeshKernel::Automatic);
 
 // F in the order drawTexturedMesh draws fastest: by bands of rows of V (32 px, as it draws),
 // left to right within a band, so that triangles drawn one after another share their texels and
