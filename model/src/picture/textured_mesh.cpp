@@ -244,12 +244,19 @@ std::pair<int, int> coveredRows(const std::vector<MeshPoint> &points, int height
 }
 
 // The faces drawn, bucketed by strips of kStripRows target rows: strip k holds, in the order of
-// F, the valid faces whose box meets rows [k·kStripRows, (k+1)·kStripRows).
-using FaceStrips = std::vector<std::vector<Eigen::Index>>;
+// F, the valid faces whose box meets rows [k·kStripRows, (k+1)·kStripRows); and the work each
+// strip costs, estimated in pixels (each face's area shared out over its rows, plus a cost per
+// face and per span).
+struct FaceStrips {
+    std::vector<std::vector<Eigen::Index>> faces;
+    std::vector<double> work;
+};
 
 FaceStrips faceStrips(const std::vector<MeshPoint> &points, const Eigen::MatrixX3i &F, int height)
 {
-    FaceStrips strips(std::size_t((height + kStripRows - 1) / kStripRows));
+    constexpr double kFaceCost = 40.0, kSpanCost = 6.0; // in pixels drawn, measured roughly
+    const auto count = std::size_t((height + kStripRows - 1) / kStripRows);
+    FaceStrips strips{std::vector<std::vector<Eigen::Index>>(count), std::vector<double>(count)};
     const auto n = Eigen::Index(points.size());
     for (Eigen::Index f = 0; f < F.rows(); ++f) {
         const int i = F(f, 0), j = F(f, 1), k = F(f, 2);
@@ -263,11 +270,39 @@ FaceStrips faceStrips(const std::vector<MeshPoint> &points, const Eigen::MatrixX
             std::max<std::int64_t>(0, -floorDiv(kHalfPixel - std::min({a.y, b.y, c.y}), kSubpixel));
         const std::int64_t bottom = std::min<std::int64_t>(
             height - 1, floorDiv(std::max({a.y, b.y, c.y}) - kHalfPixel, kSubpixel));
-        for (std::int64_t strip = top / kStripRows; strip <= bottom / kStripRows && top <= bottom;
-             ++strip)
-            strips[std::size_t(strip)].push_back(f);
+        if (top > bottom)
+            continue;
+        const double area =
+            0.5 * std::abs((b.fx - a.fx) * (c.fy - a.fy) - (b.fy - a.fy) * (c.fx - a.fx));
+        const double perRow = area / double(bottom - top + 1);
+        for (std::int64_t strip = top / kStripRows; strip <= bottom / kStripRows; ++strip) {
+            const std::int64_t rows = std::min(bottom, (strip + 1) * kStripRows - 1) -
+                                      std::max(top, strip * kStripRows) + 1;
+            strips.faces[std::size_t(strip)].push_back(f);
+            strips.work[std::size_t(strip)] += kFaceCost + double(rows) * (perRow + kSpanCost);
+        }
     }
     return strips;
+}
+
+// The row that splits the rows [top, bottom) into two bands of about the same work.
+int balancedSplit(const FaceStrips &strips, int top, int bottom)
+{
+    const int first = top / kStripRows, last = (bottom - 1) / kStripRows;
+    double total = 0.0;
+    for (int s = first; s <= last; ++s)
+        total += strips.work[std::size_t(s)];
+    double done = 0.0;
+    int split = (top + bottom) / 2;
+    for (int s = first; s <= last; ++s) {
+        const double work = strips.work[std::size_t(s)];
+        if (work > 0.0 && done + work >= total / 2.0) { // within strip s, in proportion
+            split = s * kStripRows + int(std::lround(kStripRows * (total / 2.0 - done) / work));
+            break;
+        }
+        done += work;
+    }
+    return std::clamp(split, top + 1, bottom - 1);
 }
 
 // The cache lines a strip will read: its triangles' texels (the box of their uv) and target
@@ -359,10 +394,10 @@ drawStripsWith(const Raster &band, const FaceStrips &strips, const std::vector<M
         Raster r = band;
         r.bandTop = std::max(band.bandTop, strip * kStripRows);
         r.bandBottom = std::min(band.bandBottom, (strip + 1) * kStripRows);
-        const auto &faces = strips[std::size_t(strip)];
+        const auto &faces = strips.faces[std::size_t(strip)];
         const int nextTop = (strip + 1) * kStripRows;
         StripPrefetch next(band,
-                           nextTop < band.bandBottom ? strips[std::size_t(strip + 1)]
+                           nextTop < band.bandBottom ? strips.faces[std::size_t(strip + 1)]
                                                      : std::vector<Eigen::Index>(),
                            points, uv, F, nextTop, std::min(band.bandBottom, nextTop + kStripRows));
         const int perFace = faces.empty() ? 0 : next.lines() / int(faces.size()) + 1;
@@ -484,13 +519,13 @@ void drawTexturedMesh(QImage &target, const QTransform &view, const QImage &text
     const std::vector<MeshPoint> points = mapVertices(view, V, uv);
     const FaceStrips strips = faceStrips(points, F, r.height);
     const auto [top, bottom] = coveredRows(points, r.height);
-    // Two bands of rows drawn at once: every pixel still sees the same triangles in the same
-    // order, so the result is the same as drawn in one pass.
+    // Two bands of rows of about the same work drawn at once: every pixel still sees the same
+    // triangles in the same order, so the result is the same as drawn in one pass.
     if (bottom - top >= 2 * kMinBandRows && F.rows() >= kMinThreadedFaces &&
         std::thread::hardware_concurrency() >= 2) {
         Raster upper = r, lower = r;
         upper.bandTop = top;
-        upper.bandBottom = lower.bandTop = (top + bottom) / 2;
+        upper.bandBottom = lower.bandTop = balancedSplit(strips, top, bottom);
         lower.bandBottom = bottom;
         try {
             std::thread helper([&] { drawStrips(lower, strips, points, uv, F); });
