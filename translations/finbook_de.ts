@@ -173,7 +173,12 @@
         <translation>Dokumenteinstellungen ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/object_commands.cpp" line="17"/>
+        <location filename="../model/src/object_commands.cpp" line="28"/>
+        <source>“%1” has lines under the picture of “%2”: one object draws its picture under its lines, so merged they would cover it. Put the picture below them first (Object → Send Backward).</source>
+        <translation>„%1“ hat Linien unter dem Bild von „%2“: Ein Objekt zeichnet sein Bild unter seine Linien, zusammengeführt würden sie es also verdecken. Legen Sie das Bild zuerst darunter (Objekt → Nach hinten stellen).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/object_commands.cpp" line="43"/>
         <source>Merge Objects</source>
         <translation>Objekte zusammenführen</translation>
     </message>
@@ -458,7 +463,7 @@
     <message>
         <location filename="../model/src/document.cpp" line="21"/>
         <location filename="../model/src/document.cpp" line="226"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="226"/>
         <source>Layer 1</source>
         <translation>Ebene 1</translation>
     </message>
@@ -1267,17 +1272,17 @@
         <translation>Die Referenz „%1“ wird weggelassen: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="723"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="759"/>
         <source>the zip container failed</source>
         <translation>der ZIP-Container ließ sich nicht schreiben</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="739"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="775"/>
         <source>Lottie has no place for the reference picture; it is left out.</source>
         <translation>Lottie kann das Referenzbild nicht aufnehmen; es wird weggelassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="741"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="777"/>
         <source>Lottie carries no sound; the soundtrack is left out.</source>
         <translation>Lottie enthält keinen Ton; die Tonspur wird weggelassen.</translation>
     </message>
@@ -1442,27 +1447,27 @@
         <translation>%1 hat am Ende %2 unerwartete Bytes</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="35"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="36"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Die Datei ist unvollständig (vielleicht wurde ein Kopier- oder Speichervorgang unterbrochen); falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="41"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="42"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Die Datei ist beschädigt; falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="46"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="47"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 Die Datei ist beschädigt; Finbook kann öffnen, was davon noch lesbar ist, oder Sie öffnen die Sicherungskopie mit demselben Namen und angehängtem ~, falls es eine gibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="52"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="74"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="75"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
@@ -1492,43 +1497,43 @@
         <translation>der Ordner „%1“ existiert nicht</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="81"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="90"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="91"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>„%1“ kann nicht geöffnet werden: %2. Prüfen Sie, ob die Datei existiert und ob Sie sie lesen dürfen.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="132"/>
         <source>it is a folder</source>
         <translation>es ist ein Ordner</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="165"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>„%1“ kann nicht gelesen werden: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="145"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="146"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="176"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>„%1“ kann nicht geöffnet werden. %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="136"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>„%1“ kann nicht geöffnet werden: Es ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie eine .finbook-Datei.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="155"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>„%1“ kann nicht geöffnet werden: Für die %2 MB der Datei ist nicht genug Arbeitsspeicher vorhanden. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="266"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
     </message>
@@ -2238,17 +2243,17 @@
         <translation>Skelettgelenk %1 hat eine unbekannte Markierung für den Gliedmaßenansatz</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="51"/>
         <source>%1 damaged bytes could not be read; reading goes on with section %2</source>
         <translation>%1 beschädigte Bytes konnten nicht gelesen werden; das Lesen wird mit Abschnitt %2 fortgesetzt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="57"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="59"/>
         <source>the last %1 bytes of the file are damaged and could not be read</source>
         <translation>die letzten %1 Bytes der Datei sind beschädigt und konnten nicht gelesen werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_recover.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="139"/>
         <source>%n missing or repeated id(s) were replaced by new ones</source>
         <translation>
             <numerusform>%n fehlende oder doppelte ID wurde durch eine neue ersetzt</numerusform>
@@ -2919,43 +2924,44 @@
         <translation>Sie ist größer als %1 MB.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="43"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="44"/>
         <source>The picture is empty.</source>
         <translation>Das Bild ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="48"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="267"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="49"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="275"/>
         <source>There is not enough memory for the picture.</source>
         <translation>Für das Bild ist nicht genug Speicher da.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="54"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="55"/>
         <source>The picture could not be encoded to be saved: %1</source>
         <translation>Das Bild ließ sich zum Speichern nicht kodieren: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="70"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="71"/>
         <source>The picture&apos;s outline cannot be traced: %1</source>
         <translation>Der Umriss des Bildes lässt sich nicht nachzeichnen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="74"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="75"/>
         <source>The picture is fully transparent: nothing of it shows.</source>
         <translation>Das Bild ist ganz durchsichtig: Nichts davon ist zu sehen.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="86"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="87"/>
         <source>The picture&apos;s outline cannot be meshed: %1</source>
         <translation>Der Umriss des Bildes lässt sich nicht vernetzen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="249"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="288"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="303"/>
         <source>The object has no picture.</source>
         <translation>Das Objekt hat kein Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="260"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="268"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>Das posierte Bild ist zu groß, um es zu behalten (höchstens %1 Pixel breit und hoch).</translation>
     </message>
@@ -5224,7 +5230,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="117"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
@@ -5238,7 +5244,7 @@
         <location filename="../ui/src/window/main_window_files.cpp" line="357"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="373"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="386"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
         <source>Import Picture</source>
         <translation>Bild importieren</translation>
     </message>
@@ -5317,283 +5323,283 @@
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="63"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
         <source>Open Exa&amp;mple</source>
         <translation>Beis&amp;piel öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="84"/>
         <source>&amp;Welcome...</source>
         <translation>&amp;Willkommen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="117"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
         <source>Import &amp;Picture...</source>
         <translation>Bil&amp;d importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
         <source>Pictures (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster stacks (*.ora);;All files (*)</source>
         <translation>Bilder (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster-Stapel (*.ora);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <source>Import Re&amp;ference...</source>
         <translation>&amp;Referenz importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
         <source>Cannot Import Reference</source>
         <translation>Referenz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="140"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="162"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="193"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="213"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="215"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="222"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="228"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="235"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="278"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>Rotate View &amp;Left</source>
         <translation>Ansicht nach &amp;links drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>Rotate View &amp;Right</source>
         <translation>Ansicht nach &amp;rechts drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="285"/>
         <source>R&amp;eset View Rotation</source>
         <translation>Dre&amp;hung der Ansicht zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="288"/>
         <source>Mirror Vie&amp;w</source>
         <translation>Ansicht sp&amp;iegeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="305"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="309"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="315"/>
         <source>&amp;Camera View</source>
         <translation>Kamera&amp;ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Andere Ebenen ab&amp;dunkeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="328"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="332"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="334"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="345"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="347"/>
         <source>&amp;Layer</source>
         <translation>Ebe&amp;ne</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="352"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="354"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="372"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="373"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="375"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="381"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="383"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="383"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
         <source>Finbook &amp;Manual</source>
         <translation>Finbook-&amp;Handbuch</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="388"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="390"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="390"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="392"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="420"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="422"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="444"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="446"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="445"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="447"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -5618,13 +5624,13 @@
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="162"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="166"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>
@@ -5983,12 +5989,12 @@
         <translation>Objekt %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="174"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="178"/>
         <source>Merge Objects</source>
         <translation>Objekte zusammenführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="196"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="200"/>
         <source>Move Strokes to Object</source>
         <translation>Striche in Objekt verschieben</translation>
     </message>

@@ -173,7 +173,12 @@
         <translation>Modifier les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/object_commands.cpp" line="17"/>
+        <location filename="../model/src/object_commands.cpp" line="28"/>
+        <source>“%1” has lines under the picture of “%2”: one object draws its picture under its lines, so merged they would cover it. Put the picture below them first (Object → Send Backward).</source>
+        <translation>« %1 » a des lignes sous l’image de « %2 » : un objet dessine son image sous ses lignes, donc fusionnées elles la couvriraient. Placez d’abord l’image en dessous (Objet → Descendre).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/object_commands.cpp" line="43"/>
         <source>Merge Objects</source>
         <translation>Fusionner les objets</translation>
     </message>
@@ -458,7 +463,7 @@
     <message>
         <location filename="../model/src/document.cpp" line="21"/>
         <location filename="../model/src/document.cpp" line="226"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="226"/>
         <source>Layer 1</source>
         <translation>Calque 1</translation>
     </message>
@@ -1267,17 +1272,17 @@
         <translation>La référence « %1 » est omise : %2</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="723"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="759"/>
         <source>the zip container failed</source>
         <translation>le conteneur zip n&apos;a pas pu être écrit</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="739"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="775"/>
         <source>Lottie has no place for the reference picture; it is left out.</source>
         <translation>Lottie ne peut pas contenir l&apos;image de référence ; elle est laissée de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="741"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="777"/>
         <source>Lottie carries no sound; the soundtrack is left out.</source>
         <translation>Lottie ne contient pas de son ; la bande son est laissée de côté.</translation>
     </message>
@@ -1442,27 +1447,27 @@
         <translation>%1 se termine par %2 octets inattendus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="35"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="36"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Le fichier est incomplet (copie ou enregistrement interrompu&#xa0;?)&#xa0;; s&apos;il existe une sauvegarde du même nom terminée par ~, ouvrez-la plutôt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="41"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="42"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Le fichier est endommagé&#xa0;; s&apos;il existe une sauvegarde du même nom terminée par ~, ouvrez-la plutôt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="46"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="47"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 Le fichier est endommagé&#xa0;; Finbook peut en ouvrir ce qui reste lisible, ou vous pouvez ouvrir la sauvegarde du même nom terminée par ~, s&apos;il en existe une.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="52"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="74"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="75"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
@@ -1492,43 +1497,43 @@
         <translation>le dossier «&#xa0;%1&#xa0;» n&apos;existe pas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="81"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="90"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="91"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: %2. Vérifiez que le fichier existe et que vous avez le droit de le lire.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="132"/>
         <source>it is a folder</source>
         <translation>c&apos;est un dossier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="165"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>Impossible de lire «&#xa0;%1&#xa0;»&#xa0;: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="145"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="146"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="176"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;». %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="136"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: c&apos;est un périphérique, un tube ou un socket, pas un fichier. Choisissez un fichier .finbook.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="155"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante pour ses %2&#xa0;Mo. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="266"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
     </message>
@@ -2238,17 +2243,17 @@
         <translation>l’articulation %1 du squelette a une marque de base de membre inconnue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="51"/>
         <source>%1 damaged bytes could not be read; reading goes on with section %2</source>
         <translation>%1 octets endommagés n&apos;ont pas pu être lus&#xa0;; la lecture reprend à la section %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="57"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="59"/>
         <source>the last %1 bytes of the file are damaged and could not be read</source>
         <translation>les %1 derniers octets du fichier sont endommagés et n&apos;ont pas pu être lus</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_recover.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="139"/>
         <source>%n missing or repeated id(s) were replaced by new ones</source>
         <translation>
             <numerusform>%n identifiant manquant ou en double a été remplacé par un nouveau</numerusform>
@@ -2919,43 +2924,44 @@
         <translation>Il dépasse %1 Mo.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="43"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="44"/>
         <source>The picture is empty.</source>
         <translation>L’image est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="48"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="267"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="49"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="275"/>
         <source>There is not enough memory for the picture.</source>
         <translation>Il n’y a pas assez de mémoire pour l’image.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="54"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="55"/>
         <source>The picture could not be encoded to be saved: %1</source>
         <translation>L’image n’a pas pu être encodée pour être enregistrée : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="70"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="71"/>
         <source>The picture&apos;s outline cannot be traced: %1</source>
         <translation>Le contour de l’image ne peut pas être tracé : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="74"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="75"/>
         <source>The picture is fully transparent: nothing of it shows.</source>
         <translation>L’image est entièrement transparente : rien n’en paraît.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="86"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="87"/>
         <source>The picture&apos;s outline cannot be meshed: %1</source>
         <translation>Le contour de l’image ne peut pas être maillé : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="249"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="288"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="303"/>
         <source>The object has no picture.</source>
         <translation>L’objet n’a pas d’image.</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="260"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="268"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>L’image posée est trop grande pour être gardée (au plus %1 pixels de large et de haut).</translation>
     </message>
@@ -5244,7 +5250,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="117"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
@@ -5258,7 +5264,7 @@
         <location filename="../ui/src/window/main_window_files.cpp" line="357"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="373"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="386"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
         <source>Import Picture</source>
         <translation>Importer une image</translation>
     </message>
@@ -5337,294 +5343,294 @@
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="63"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
         <source>Open Exa&amp;mple</source>
         <translation>Ouvrir l&apos;e&amp;xemple</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="84"/>
         <source>&amp;Welcome...</source>
         <translation>&amp;Bienvenue...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="117"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
         <source>Import &amp;Picture...</source>
         <translation>Importer une ima&amp;ge...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
         <source>Pictures (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster stacks (*.ora);;All files (*)</source>
         <translation>Images (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;Piles OpenRaster (*.ora);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <source>Import Re&amp;ference...</source>
         <translation>Importer une ré&amp;férence...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
         <source>Cannot Import Reference</source>
         <translation>Impossible d’importer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="140"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="162"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="193"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="213"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="215"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="222"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="228"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="235"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="278"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>Rotate View &amp;Left</source>
         <translation>Tourner la vue à &amp;gauche</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>Rotate View &amp;Right</source>
         <translation>Tourner la vue à &amp;droite</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="285"/>
         <source>R&amp;eset View Rotation</source>
         <translation>Ré&amp;initialiser la rotation de la vue</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="288"/>
         <source>Mirror Vie&amp;w</source>
         <translation>Vue en mir&amp;oir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="305"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="309"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="315"/>
         <source>&amp;Camera View</source>
         <translation>Vue &amp;caméra</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Atténuer les a&amp;utres calques</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="328"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="332"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="334"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="345"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="347"/>
         <source>&amp;Layer</source>
         <translation>&amp;Calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="352"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="354"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="372"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="373"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="375"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="381"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="383"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="383"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
         <source>Finbook &amp;Manual</source>
         <translation>&amp;Manuel de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="388"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="390"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="390"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="392"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="420"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="422"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="444"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="446"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="445"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="447"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="162"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="166"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Rétablir</translation>
@@ -5983,12 +5989,12 @@
         <translation>Objet %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="174"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="178"/>
         <source>Merge Objects</source>
         <translation>Fusionner les objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="196"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="200"/>
         <source>Move Strokes to Object</source>
         <translation>Déplacer les traits vers un objet</translation>
     </message>

@@ -173,7 +173,12 @@
         <translation>ドキュメント設定を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/object_commands.cpp" line="17"/>
+        <location filename="../model/src/object_commands.cpp" line="28"/>
+        <source>“%1” has lines under the picture of “%2”: one object draws its picture under its lines, so merged they would cover it. Put the picture below them first (Object → Send Backward).</source>
+        <translation>「%1」には「%2」の画像の下に線があります。オブジェクトは画像を線の下に描くため、結合すると線が画像を覆ってしまいます。先に画像を下へ移してください（オブジェクト → 背面へ）。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/object_commands.cpp" line="43"/>
         <source>Merge Objects</source>
         <translation>オブジェクトを結合</translation>
     </message>
@@ -458,7 +463,7 @@
     <message>
         <location filename="../model/src/document.cpp" line="21"/>
         <location filename="../model/src/document.cpp" line="226"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="226"/>
         <source>Layer 1</source>
         <translation>レイヤー 1</translation>
     </message>
@@ -1262,17 +1267,17 @@
         <translation>参照「%1」は省かれます: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="723"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="759"/>
         <source>the zip container failed</source>
         <translation>ZIP コンテナーを書き込めませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="739"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="775"/>
         <source>Lottie has no place for the reference picture; it is left out.</source>
         <translation>Lottie には参照画像を入れられないため、省きました。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="741"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="777"/>
         <source>Lottie carries no sound; the soundtrack is left out.</source>
         <translation>Lottie は音声を持てないため、サウンドトラックは省きました。</translation>
     </message>
@@ -1437,27 +1442,27 @@
         <translation>%1 の末尾に予期しない %2 バイトがあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="35"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="36"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 ファイルが不完全です（コピーや保存が中断された可能性があります）。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="41"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="42"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 ファイルが破損しています。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="46"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="47"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 ファイルが破損しています。Finbook でまだ読み取れる部分を開くか、同じ名前で末尾に ~ が付いたバックアップがあれば、そちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="52"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="74"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="75"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
@@ -1487,43 +1492,43 @@
         <translation>フォルダー「%1」が存在しません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="81"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="90"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="91"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>「%1」を開けません: %2。ファイルが存在し、読み取る権限があることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="132"/>
         <source>it is a folder</source>
         <translation>フォルダーです</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="165"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>「%1」を読み込めません: %2。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="145"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="146"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="176"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>「%1」を開けません。%2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="136"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>「%1」を開けません: ファイルではなく、デバイス、パイプ、またはソケットです。.finbook ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="155"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>「%1」を開けません: %2 MB を読み込むのに十分なメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="266"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
@@ -2230,17 +2235,17 @@
         <translation>スケルトンの関節 %1 に不明な肢の付け根の印があります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="51"/>
         <source>%1 damaged bytes could not be read; reading goes on with section %2</source>
         <translation>破損した %1 バイトを読み取れませんでした。セクション %2 から読み込みを続けます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="57"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="59"/>
         <source>the last %1 bytes of the file are damaged and could not be read</source>
         <translation>ファイルの最後の %1 バイトが破損していて読み取れませんでした</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_recover.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="139"/>
         <source>%n missing or repeated id(s) were replaced by new ones</source>
         <translation>
             <numerusform>欠落または重複していた ID %n 個を新しい ID に置き換えました</numerusform>
@@ -2909,43 +2914,44 @@
         <translation>%1 MB を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="43"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="44"/>
         <source>The picture is empty.</source>
         <translation>画像が空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="48"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="267"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="49"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="275"/>
         <source>There is not enough memory for the picture.</source>
         <translation>画像のためのメモリが足りません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="54"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="55"/>
         <source>The picture could not be encoded to be saved: %1</source>
         <translation>保存用に画像をエンコードできませんでした：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="70"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="71"/>
         <source>The picture&apos;s outline cannot be traced: %1</source>
         <translation>画像の輪郭を抽出できません：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="74"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="75"/>
         <source>The picture is fully transparent: nothing of it shows.</source>
         <translation>画像が完全に透明で、何も見えません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="86"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="87"/>
         <source>The picture&apos;s outline cannot be meshed: %1</source>
         <translation>画像の輪郭をメッシュにできません：%1</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="249"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="288"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="303"/>
         <source>The object has no picture.</source>
         <translation>オブジェクトに画像がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/picture/picture_object.cpp" line="260"/>
+        <location filename="../model/src/picture/picture_object.cpp" line="268"/>
         <source>The posed picture is too large to keep (at most %1 pixels wide and high).</source>
         <translation>ポーズをつけた画像が大きすぎて保持できません（幅と高さは最大 %1 ピクセル）。</translation>
     </message>
@@ -5224,7 +5230,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="117"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
@@ -5238,7 +5244,7 @@
         <location filename="../ui/src/window/main_window_files.cpp" line="357"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="373"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="386"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
         <source>Import Picture</source>
         <translation>画像を読み込む</translation>
     </message>
@@ -5316,294 +5322,294 @@
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="63"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
         <source>Open Exa&amp;mple</source>
         <translation>見本を開く(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="84"/>
         <source>&amp;Welcome...</source>
         <translation>ようこそ(&amp;W)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="115"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="117"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
         <source>Import &amp;Picture...</source>
         <translation>画像を読み込む(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
         <source>Pictures (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster stacks (*.ora);;All files (*)</source>
         <translation>画像 (*.png *.jpg *.jpeg *.webp *.tif *.tiff *.gif *.bmp *.ora);;OpenRaster スタック (*.ora);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <source>Import Re&amp;ference...</source>
         <translation>参照を読み込む(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
         <source>Cannot Import Reference</source>
         <translation>参照を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="140"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="162"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="410"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="193"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="213"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="215"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="222"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="228"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="235"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="278"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>Rotate View &amp;Left</source>
         <translation>表示を左に回転(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>Rotate View &amp;Right</source>
         <translation>表示を右に回転(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="285"/>
         <source>R&amp;eset View Rotation</source>
         <translation>表示の回転をリセット(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="288"/>
         <source>Mirror Vie&amp;w</source>
         <translation>表示を左右反転(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="305"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="309"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="315"/>
         <source>&amp;Camera View</source>
         <translation>カメラビュー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
         <source>&amp;Dim Other Layers</source>
         <translation>他のレイヤーを薄く表示(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="328"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="332"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="334"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="345"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="347"/>
         <source>&amp;Layer</source>
         <translation>レイヤー(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="352"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="354"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="370"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="372"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="373"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="375"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="381"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="383"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="383"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
         <source>Finbook &amp;Manual</source>
         <translation>Finbook マニュアル(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="388"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="390"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="390"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="392"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="420"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="422"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="444"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="446"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="445"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="447"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="162"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="166"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>やり直す</translation>
@@ -5962,12 +5968,12 @@
         <translation>オブジェクト %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="174"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="178"/>
         <source>Merge Objects</source>
         <translation>オブジェクトを結合</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="196"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="200"/>
         <source>Move Strokes to Object</source>
         <translation>ストロークをオブジェクトへ移動</translation>
     </message>

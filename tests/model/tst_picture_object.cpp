@@ -9,6 +9,7 @@
 #include <finbook/model/export/exporter.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/inbetween/inbetween_plan.h>
+#include <finbook/model/object_commands.h>
 #include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/picture/picture_object.h>
 #include <finbook/model/render.h>
@@ -41,6 +42,7 @@ private slots:
     void exportsShowThePictureAsPosed_data();
     void exportsShowThePictureAsPosed();
     void cutOutTurnsPiecesRigidlyWithSockets();
+    void mergeStacksPicturesAndRefusesCoveringThem();
 };
 
 namespace {
@@ -607,6 +609,81 @@ void TestPictureObject::cutOutTurnsPiecesRigidlyWithSockets()
     Frame backFrame;
     backFrame.groups.push_back(back);
     QCOMPARE(largestDifference(render(backFrame, QSize(360, 300)), posed), 0);
+}
+
+void TestPictureObject::mergeStacksPicturesAndRefusesCoveringThem()
+{
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id frame = doc.frameAt(0).id;
+    // Two soft-edged pictures overlapping, the upper one mirrored and moved by whole pixels,
+    // and a drawn object on top of both.
+    auto upperPicture = makePictureObject(
+        PictureLayer{QStringLiteral("mirrored"), paintedPicture().mirrored(true, false), {}},
+        kAt + QPointF(37, 21));
+    QVERIFY(upperPicture.hasValue());
+    auto *import = new ImportPictureCommand(&doc, frame, -1, {pictureGroup(), *upperPicture});
+    doc.undoStack()->push(import);
+    const Id lower = import->objectIds()[0], upper = import->objectIds()[1];
+    auto *drawn = new AddObjectCommand(&doc, frame, -1, QStringLiteral("lines"));
+    doc.undoStack()->push(drawn);
+    auto line = std::make_shared<StrokeData>();
+    line->color = 0xff000000;
+    line->width = 4.0f;
+    for (int i = 0; i <= 40; ++i)
+        line->points.push_back({30.0f + 5.0f * float(i), 60.0f + float(i), 0.5f});
+    doc.undoStack()->push(new AddStrokeCommand(&doc, drawn->groupId(), line));
+    const QSize size(300, 220);
+    const QImage before = render(doc.frameAt(0), size);
+    const QByteArray saved = serializeFinbook(doc);
+
+    // Lines under a picture: refused, with a sentence naming both, and the command changes
+    // nothing if pushed anyway.
+    const QString refusal = mergeRefusal(doc, {drawn->groupId(), lower});
+    QVERIFY(refusal.contains(QStringLiteral("lines")) && refusal.contains(QStringLiteral("blob")));
+    QVERIFY(mergeRefusal(doc, {lower, upper, drawn->groupId()}).isEmpty());
+    QVERIFY(!mergeRefusal(doc, {lower, drawn->groupId(), upper}).isEmpty());
+    const int steps = doc.undoStack()->index();
+    doc.undoStack()->push(new ReorderObjectCommand(&doc, drawn->groupId(), 0)); // lines at bottom
+    const QImage reordered = render(doc.frameAt(0), size);
+    doc.undoStack()->push(new MergeObjectsCommand(&doc, lower, drawn->groupId()));
+    QVERIFY(doc.group(lower) && doc.group(lower)->picture);
+    QCOMPARE(render(doc.frameAt(0), size), reordered);
+    while (doc.undoStack()->index() > steps)
+        doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(doc), saved);
+
+    // Two pictures and the lines above them: one object, one picture covering both, and the
+    // same look (the pictures lie on whole pixels, so no pixel is resampled).
+    const QRectF both =
+        shownPictureBounds(*doc.group(lower)).united(shownPictureBounds(*doc.group(upper)));
+    doc.undoStack()->push(new MergeObjectsCommand(&doc, upper, lower));
+    doc.undoStack()->push(new MergeObjectsCommand(&doc, drawn->groupId(), lower));
+    QVERIFY(!doc.group(upper) && !doc.group(drawn->groupId()));
+    const StrokeGroup &merged = *doc.group(lower);
+    QVERIFY(merged.picture && pictureIsValid(*merged.picture));
+    QVERIFY(merged.picture->restRect().contains(both));
+    QVERIFY(merged.picture->restRect().width() < both.width() + 2);
+    QCOMPARE(merged.strokes.size(), std::size_t(1));
+    const QImage after = render(doc.frameAt(0), size);
+    QVERIFY2(largestDifference(after, before) <= 1,
+             qPrintable(QString::number(largestDifference(after, before))));
+    const auto mergedPicture = merged.picture;
+    // Undo gives both objects back as they were; redo the very same merged picture.
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(doc), saved);
+    doc.undoStack()->redo();
+    doc.undoStack()->redo();
+    QVERIFY(doc.group(lower)->picture == mergedPicture);
+    // A picture merged into an object without one keeps its very pixels.
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    auto *empty = new AddObjectCommand(&doc, frame, 0, QStringLiteral("empty"));
+    doc.undoStack()->push(empty);
+    const auto lowerPicture = doc.group(lower)->picture;
+    doc.undoStack()->push(new MergeObjectsCommand(&doc, lower, empty->groupId()));
+    QVERIFY(doc.group(empty->groupId())->picture == lowerPicture);
 }
 
 QTEST_MAIN(TestPictureObject)

@@ -3,6 +3,8 @@
 // exactly the frame it started from. Driven through the real widgets where a user would click.
 #include <finbook/model/commands.h>
 #include <finbook/model/object_list_model.h>
+#include <finbook/model/picture/picture_commands.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/panels/objects_panel.h>
 #include <finbook/ui/window/editor_state.h>
@@ -12,6 +14,7 @@
 #include <QListView>
 #include <QMenu>
 #include <QMimeData>
+#include <QSignalSpy>
 #include <QTest>
 #include <QToolButton>
 
@@ -109,6 +112,7 @@ private slots:
     void reorderWithActionsAndDrop();
     void mergeDownKeepsOrderAndUndoesExactly();
     void mergeSelectedIsOneUndoStep();
+    void mergeRefusedWhereLinesWouldCoverAPicture();
     void moveSelectedStrokesToAnotherObject();
     void deleteKeepsOneObject();
     void grabScreenshot();
@@ -260,6 +264,30 @@ void TestObjects::mergeSelectedIsOneUndoStep()
     QVERIFY(sameFrame(f.doc.frameAt(0), before));
     f.doc.undoStack()->redo();
     QCOMPARE(f.doc.frameAt(0).groups.size(), std::size_t(2));
+}
+
+void TestObjects::mergeRefusedWhereLinesWouldCoverAPicture()
+{
+    Fixture f;
+    QImage pixels(40, 30, QImage::Format_ARGB32_Premultiplied);
+    pixels.fill(QColor(200, 60, 20));
+    auto picture = model::makePictureObject(model::PictureLayer{QStringLiteral("P"), pixels, {}},
+                                            QPointF(20, 10));
+    QVERIFY(picture.hasValue());
+    const Id frame = f.doc.frameAt(0).id;
+    auto *import = new model::ImportPictureCommand(&f.doc, frame, -1, {*picture});
+    f.doc.undoStack()->push(import);
+    f.doc.undoStack()->clear();
+    const model::Frame before = f.doc.frameAt(0);
+    // The picture (on top) merged down into C, whose lines it covers: refused, with a reason.
+    f.state->setCurrentGroupId(import->objectIds().front());
+    QSignalSpy message(f.actions.get(), &ui::ObjectActions::message);
+    f.actions->merge()->trigger();
+    QCOMPARE(message.count(), 1);
+    QVERIFY(message.front().front().toString().contains(QStringLiteral("“C”")));
+    QCOMPARE(f.doc.undoStack()->count(), 0);
+    QVERIFY(sameFrame(f.doc.frameAt(0), before));
+    QVERIFY(f.doc.frameAt(0).groups.back().picture == before.groups.back().picture);
 }
 
 void TestObjects::moveSelectedStrokesToAnotherObject()

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace finbook::model {
 
@@ -251,15 +252,13 @@ QRectF shownPictureBounds(const StrokeGroup &group)
     return boundsOf(shownPictureMesh(group).V);
 }
 
-Expected<std::shared_ptr<const ObjectPicture>, QString> bakedPicture(const StrokeGroup &group)
+namespace {
+
+// The pictures of `groups` as they show now, drawn in that order (source-over) into one new
+// rest picture over `shown` (canvas px, whole pixels), placed where they show.
+Expected<std::shared_ptr<const ObjectPicture>, QString>
+drawnPicture(std::initializer_list<const StrokeGroup *> groups, const QRectF &shown)
 {
-    if (!group.picture || !pictureIsValid(*group.picture))
-        return unexpected(
-            pictureTr(QT_TRANSLATE_NOOP("PictureImport", "The object has no picture.")));
-    if (!group.isDeformed() ||
-        group.deformed->pictureVertices.size() != std::size_t(group.picture->mesh->uv.rows()))
-        return group.picture;
-    const QRectF shown = shownPictureBounds(group);
     const QPoint topLeft(int(std::floor(shown.left())), int(std::floor(shown.top())));
     const QPoint bottomRight(int(std::ceil(shown.right())), int(std::ceil(shown.bottom())));
     const QSize size(bottomRight.x() - topLeft.x(), bottomRight.y() - topLeft.y());
@@ -275,8 +274,40 @@ Expected<std::shared_ptr<const ObjectPicture>, QString> bakedPicture(const Strok
         return unexpected(pictureTr(
             QT_TRANSLATE_NOOP("PictureImport", "There is not enough memory for the picture.")));
     image.fill(Qt::transparent);
-    drawPicture(image, QTransform::fromTranslate(-topLeft.x(), -topLeft.y()), group);
+    for (const StrokeGroup *group : groups)
+        drawPicture(image, QTransform::fromTranslate(-topLeft.x(), -topLeft.y()), *group);
     return newPicture(image, QPointF(topLeft));
+}
+
+} // namespace
+
+Expected<std::shared_ptr<const ObjectPicture>, QString> bakedPicture(const StrokeGroup &group)
+{
+    if (!group.picture || !pictureIsValid(*group.picture))
+        return unexpected(
+            pictureTr(QT_TRANSLATE_NOOP("PictureImport", "The object has no picture.")));
+    if (!group.isDeformed() ||
+        group.deformed->pictureVertices.size() != std::size_t(group.picture->mesh->uv.rows()))
+        return group.picture;
+    return drawnPicture({&group}, shownPictureBounds(group));
+}
+
+Expected<std::shared_ptr<const ObjectPicture>, QString> stackedPicture(const StrokeGroup &below,
+                                                                       const StrokeGroup &above)
+{
+    const bool hasBelow = below.picture && pictureIsValid(*below.picture);
+    const bool hasAbove = above.picture && pictureIsValid(*above.picture);
+    if (!hasBelow || !hasAbove) {
+        if (!hasBelow && !hasAbove)
+            return unexpected(
+                pictureTr(QT_TRANSLATE_NOOP("PictureImport", "The object has no picture.")));
+        const StrokeGroup &only = hasBelow ? below : above;
+        if (!only.isDeformed())
+            return only.picture; // the very same picture: nothing resampled
+        return bakedPicture(only);
+    }
+    return drawnPicture({&below, &above},
+                        shownPictureBounds(below).united(shownPictureBounds(above)));
 }
 
 bool pictureShowsAt(const StrokeGroup &group, QPointF pos)

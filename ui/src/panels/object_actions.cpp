@@ -167,6 +167,10 @@ void ObjectActions::mergeObjects()
               [&](model::Id a, model::Id b) { return zIndex(*frame, a) < zIndex(*frame, b); });
     const model::Id target = ids.front();
     model::Document *doc = m_state->document();
+    if (const QString refusal = model::mergeRefusal(*doc, ids); !refusal.isEmpty()) {
+        emit message(refusal);
+        return;
+    }
     // A posed object's pose becomes its drawing first, in the same step, as for every other
     // edit of its strokes (Apply Pose keeps what the pose showed: its colours, cut-out pieces
     // and shading), so the merged drawing shows what the objects showed. Bottom up, so each

@@ -51,6 +51,8 @@ void MainWindow::createActions()
     m_frameActions = new FrameActions(m_state, this);
     m_layerActions = new LayerActions(m_state, this, this);
     m_objectActions = new ObjectActions(m_state, this);
+    connect(m_objectActions, &ObjectActions::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 8000); });
     m_swapActions = new SwapActions(m_state, this, this);
     connect(m_swapActions, &SwapActions::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 6000); });

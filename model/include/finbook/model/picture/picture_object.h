@@ -125,6 +125,13 @@ QRectF shownPictureBounds(const StrokeGroup &group);
 // meshPicture (a pose folded to nothing).
 Expected<std::shared_ptr<const ObjectPicture>, QString> bakedPicture(const StrokeGroup &group);
 
+// Merge Objects for pictures: the pictures of two objects as they show now, `above`'s over
+// `below`'s, as one rest picture covering both (canvas pixels; a picture at rest on whole
+// pixels keeps its pixels exactly). When only one of them has a picture, that picture (baked
+// when posed). Errors: those of bakedPicture, or neither has a picture.
+Expected<std::shared_ptr<const ObjectPicture>, QString> stackedPicture(const StrokeGroup &below,
+                                                                       const StrokeGroup &above);
+
 // Whether `pos` (canvas px) lies on the group's picture as it shows now: inside one of its
 // texture mesh's triangles as posed (for clicks: a pin, a bone, a selection).
 bool pictureShowsAt(const StrokeGroup &group, QPointF pos);

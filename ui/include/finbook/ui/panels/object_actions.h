@@ -6,7 +6,9 @@
 // object.delete          —                  deletes the current object (not the frame's last)
 // object.merge           Ctrl+E             merges the objects selected in the panel into the
 //                                           lowest of them, or the current object into the one
-//                                           below it (MergeObjectsCommand; drawing order kept)
+//                                           below it (MergeObjectsCommand; drawing order kept;
+//                                           refused with a message when a picture would end
+//                                           up under lines it was above)
 // object.moveSelection   —                  submenu: moves the selected strokes to another
 //                                           object of the frame (MoveStrokesCommand)
 // object.raise           Ctrl+]             brings the current object one step forward
@@ -58,6 +60,10 @@ public:
     void moveSelectionTo(model::Id targetGroupId);
     void reorder(int delta);
     void updateEnabled();
+
+signals:
+    // A sentence for the status bar: why an action did nothing (a merge refused).
+    void message(const QString &text);
 
 private:
     QAction *makeAction(const QString &name, const QString &text, const QKeySequence &shortcut);
