@@ -8,8 +8,11 @@ namespace finbook::model {
 
 namespace {
 
-// The disk of `cut` at rest as a fan (centre, then kSocketSegments points round it), textured
-// from the rest picture and moved with the limb's bone (the cut's child joint).
+// The disk of `cut` at rest as a fan (centre, then kSocketSegments points round it, starting on
+// the cut), moved with the limb's bone (the cut's child joint). It is textured from the limb's
+// own half of the disk, mirrored across the cut on the other half: turned with the limb, the
+// half that lay on the parent's side would carry the parent's pixels (a body's colour) out past
+// the parent's outline, where the limb's round end belongs.
 void addSocket(PictureLayers &layers, const deform::JointCut &cut, const QTransform &toTexture,
                const deform::Skeleton &rest, const deform::PosedSkeleton &posed)
 {
@@ -29,14 +32,26 @@ void addSocket(PictureLayers &layers, const deform::JointCut &cut, const QTransf
                        s * d.x() + c * d.y() + posedChild.y());
     };
     const Eigen::Vector2d centre = rest.joints.row(j).transpose();
+    // Along the cut, and across it towards the limb (a cut of no length: towards the child).
+    Eigen::Vector2d along = cut.b - cut.a;
+    if (!(along.norm() > 1e-9))
+        along = Eigen::Vector2d(-(restChild - centre).y(), (restChild - centre).x());
+    if (!(along.norm() > 1e-9))
+        along = Eigen::Vector2d(1.0, 0.0);
+    along.normalize();
+    Eigen::Vector2d limb(-along.y(), along.x());
+    if (limb.dot(restChild - centre) < 0.0)
+        limb = -limb;
+    static_assert(kSocketSegments % 2 == 0, "the cut's two ends are rim points");
     const int first = int(layers.vertices.size());
     for (int k = -1; k < kSocketSegments; ++k) {
-        Eigen::Vector2d p = centre;
+        Eigen::Vector2d p = centre, texel = centre;
         if (k >= 0) {
             const double t = 2.0 * std::numbers::pi * k / kSocketSegments;
-            p += cut.round * Eigen::Vector2d(std::cos(t), std::sin(t));
+            p += cut.round * (std::cos(t) * along + std::sin(t) * limb);
+            texel += cut.round * (std::cos(t) * along + std::abs(std::sin(t)) * limb);
         }
-        layers.uv.push_back(toTexture.map(QPointF(p.x(), p.y())));
+        layers.uv.push_back(toTexture.map(QPointF(texel.x(), texel.y())));
         layers.vertices.push_back(moved(p));
     }
     for (int k = 0; k < kSocketSegments; ++k)

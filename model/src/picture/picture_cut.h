@@ -8,8 +8,9 @@
 //
 // A turned limb leaves a wedge on the outer side of the bend that neither piece covers. Each
 // cut's socket fills it from the picture's own pixels: the cut's round end (the disk at its
-// joint inside the outline), textured from the rest picture and turned with the limb's bone,
-// drawn under every piece so it shows only in the gaps.
+// joint inside the outline), textured from the limb's half of that disk at rest (mirrored across
+// the cut on the other half) and turned with the limb's bone, drawn under every piece so it
+// shows only in the gaps.
 #pragma once
 
 #include <finbook/deform/skeleton/cut_out.h>
