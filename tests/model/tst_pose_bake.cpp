@@ -14,6 +14,7 @@
 #include <finbook/model/skeleton/skeleton_commands.h>
 
 #include <QFile>
+#include <QFileInfo>
 #include <QTest>
 
 #include <algorithm>
@@ -900,6 +901,10 @@ void TestPoseBake::realDrawingsKeepTheirColours_data()
     QTest::newRow("parrot, rigid")
         << QStringLiteral("review/sketches/quickdraw_parrot_5460481487667200.json")
         << int(SkinningMode::Rigid);
+    // Kept with the tests (tests/data/README.md), so that it runs wherever they do.
+    QTest::newRow("bird, linear blend")
+        << QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/quickdraw_bird_5635633911431168.json")
+        << int(SkinningMode::LinearBlend);
 }
 
 void TestPoseBake::realDrawingsKeepTheirColours()
@@ -909,7 +914,7 @@ void TestPoseBake::realDrawingsKeepTheirColours()
     const QByteArray env = qgetenv("FINBOOK_DATA_DIR");
     const QString dir =
         env.isEmpty() ? QStringLiteral(FINBOOK_DATA_DIR) : QString::fromLocal8Bit(env);
-    const QString path = dir + QLatin1Char('/') + file;
+    const QString path = QFileInfo(file).isAbsolute() ? file : dir + QLatin1Char('/') + file;
     if (!QFile::exists(path))
         QSKIP("no real data (set FINBOOK_DATA_DIR to ../shared/data)");
     QString error;

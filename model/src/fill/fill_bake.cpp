@@ -369,10 +369,6 @@ namespace {
 // Seams (shownColourSeams). A part of a face that showed another fill is given a seam only
 // when it covers this much (canvas px²): a speck is the pictures' rounding.
 constexpr double kSeamSmallestArea = 6.0;
-// The regions merge a face thinner than the pen into a neighbour (geometry/regions.h), and a
-// strip along a line or a face's edge is the pictures' rounding: a part gets a seam only when
-// it is this many times wider than the pen (twice its area over its perimeter).
-constexpr double kSeamWiderThanPen = 1.25;
 // A seam's staircase of pixel edges is straightened to within this many picture px.
 constexpr double kSeamStraighten = 0.75;
 // The most points all seams may have: the regions of a drawing take 20,000 segments at most,
@@ -472,7 +468,7 @@ struct SeamParts {
     bool any = false, outside = false;
 };
 
-SeamParts seamParts(const BakedOwners &baking, double scale, double penWidth)
+SeamParts seamParts(const BakedOwners &baking, double scale, double penWidth, double widerThanPen)
 {
     const FacesAndFills &p = baking.pictures;
     const int w = p.width, h = p.height;
@@ -517,8 +513,8 @@ SeamParts seamParts(const BakedOwners &baking, double scale, double penWidth)
             const double area = double(part.size()) / (scale * scale);
             const double perimeter = double(rim) / scale * (std::numbers::pi / 4.0);
             const bool thickEnough = perimeter > 0.0 &&
-                                     2.0 * area / perimeter >= kSeamWiderThanPen * penWidth &&
-                                     area >= kSeamWiderThanPen * 2.0 * penWidth * penWidth;
+                                     2.0 * area / perimeter >= widerThanPen * penWidth &&
+                                     area >= widerThanPen * 2.0 * penWidth * penWidth;
             if (thickEnough && double(part.size()) >= smallest) {
                 for (const auto &[px, py] : part)
                     out.kept[index(px, py)] = 1;
@@ -719,7 +715,8 @@ std::vector<Stroke> placedSeams(const std::vector<SeamChain> &chains, const Bake
 } // namespace
 
 ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                                  double closeGap, const std::function<Id()> &newId)
+                                  double closeGap, const std::function<Id()> &newId,
+                                  double widerThanPen)
 {
     ShownColourSeams result;
     if (group.fills.empty() || !group.isDeformed())
@@ -734,7 +731,7 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
     if (!(scale > 0.0))
         return result;
     const double penWidth = medianInkWidth(baked);
-    const SeamParts parts = seamParts(baking, scale, penWidth);
+    const SeamParts parts = seamParts(baking, scale, penWidth, widerThanPen);
     if (!parts.any)
         return result;
     // The pixels the lines cover, drawn at their width. Outside every face, a part's edge

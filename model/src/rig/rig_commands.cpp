@@ -144,22 +144,30 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
     // Where the baked faces still join colours the pose showed apart, lines of no ink along
     // the edge between them as painted: the seams, or the seams left off the ink, each with the
     // gaps closed now kept closed or not, whichever keeps most of what was shown (and only if
-    // that is more than without them).
-    const ShownColourSeams seams = shownColourSeams(group, strokes, closeGap, newId);
-    double best = seams.bakedAgreement;
+    // that is more than without them). Parts of faces only a little wider than the pen are
+    // tried too when the wider ones leave colours apart (a wedge under a curl: its seam may
+    // make a face the regions keep, or one they merge away, so only the agreement can tell).
+    double best = -1.0;
     std::vector<Stroke> chosen;
-    for (const std::vector<Stroke> *set : {&seams.seams, &seams.seamsOffInk}) {
-        if (set->empty())
-            continue;
-        std::vector<Stroke> with = strokes;
-        with.insert(with.end(), set->begin(), set->end());
-        for (int keep = 0; keep < (seams.keptClosures.empty() ? 1 : 2); ++keep) {
-            if (keep)
-                with.insert(with.end(), seams.keptClosures.begin(), seams.keptClosures.end());
-            if (const double agreement = shownFillAgreement(group, with, closeGap);
-                agreement > best) {
-                best = agreement;
-                chosen = with;
+    for (const double widerThanPen : {kSeamWiderThanPen, 1.0}) {
+        if (best >= 1.0 - 1e-9)
+            break;
+        const ShownColourSeams seams =
+            shownColourSeams(group, strokes, closeGap, newId, widerThanPen);
+        best = std::max(best, seams.bakedAgreement);
+        for (const std::vector<Stroke> *set : {&seams.seams, &seams.seamsOffInk}) {
+            if (set->empty())
+                continue;
+            std::vector<Stroke> with = strokes;
+            with.insert(with.end(), set->begin(), set->end());
+            for (int keep = 0; keep < (seams.keptClosures.empty() ? 1 : 2); ++keep) {
+                if (keep)
+                    with.insert(with.end(), seams.keptClosures.begin(), seams.keptClosures.end());
+                if (const double agreement = shownFillAgreement(group, with, closeGap);
+                    agreement > best) {
+                    best = agreement;
+                    chosen = with;
+                }
             }
         }
     }

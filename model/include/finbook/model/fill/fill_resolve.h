@@ -110,8 +110,13 @@ struct ShownColourSeams {
     std::vector<Stroke> keptClosures;
     double bakedAgreement = 1.0; // shownFillAgreement of `baked`, computed on the way
 };
+// The regions merge a face thinner than the pen into a neighbour (geometry/regions.h), and a
+// strip along a line or a face's edge is the pictures' rounding: a part gets a seam only when
+// it is `widerThanPen` times wider than the pen (twice its area over its perimeter).
+constexpr double kSeamWiderThanPen = 1.25;
 ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                                  double closeGap, const std::function<Id()> &newId);
+                                  double closeGap, const std::function<Id()> &newId,
+                                  double widerThanPen = kSeamWiderThanPen);
 
 // A cut-out pose's pieces end their colour where they are cut, where no line is: a limb
 // turned over the body shows its fill up to the cut, and the baked lines alone would join the
