@@ -7,9 +7,13 @@
 // app draws it, Apply Pose to Drawing, render again. One JSON object per drawing and rig:
 // agree_pct (the share of the drawing's pixels whose colour agrees, each channel within
 // 8/255; a pixel on a colour edge in both pictures, the anti-aliased rim, is left out),
-// filled_px before and after (fills alone), fills before and after, and how many fills show.
+// filled_px before and after (fills alone), fills before and after, how many fills own a face
+// of the regions (fills_shown: a fill may own only faces that show nothing, a zero-area face or
+// one under another fill), and how many show on the picture (fills_visible: each fill has a
+// colour of its own; more than 12 px of it).
 // A last line per rig kind sums up: bake_agree_pct_min and bake_agree_pct_median, the worst
-// drawing, the largest filled-area change, how many drawings changed their fill count, and
+// drawing, the largest filled-area change, how many drawings changed their fill count (faces
+// owned: shown_fill_count_changed; on the picture: visible_fill_count_changed), and
 // Apply Pose's own time (apply_ms per drawing; median and max, on the UI thread in the app).
 // --png writes, per drawing and rig, the posed picture, the baked one and the differences;
 // --rig pins|cage|skeleton_rigid|skeleton_blend|skeleton_cut_out measures that one alone;
@@ -135,6 +139,29 @@ int shownFills(const StrokeGroup &group, double closeGap)
     return int(std::count(seen.begin(), seen.end(), true));
 }
 
+// A fill shown on fewer pixels of the compared pictures is a speck (as tst_pose_bake's).
+constexpr long long kSpeck = 12;
+
+// The fills' colours (each fill has its own) that show on more than a speck of `picture`.
+int visibleFills(const std::vector<Fill> &fills, const QImage &picture)
+{
+    std::vector<QRgb> colours;
+    for (const Fill &fill : fills)
+        if (std::find(colours.begin(), colours.end(), fill.color) == colours.end())
+            colours.push_back(fill.color);
+    std::vector<long long> pixels(colours.size(), 0);
+    for (int y = 0; y < picture.height(); ++y) {
+        const auto *row = reinterpret_cast<const QRgb *>(picture.constScanLine(y));
+        for (int x = 0; x < picture.width(); ++x)
+            for (std::size_t c = 0; c < colours.size(); ++c)
+                if (finbook::testing::sameColour(row[x], colours[c])) {
+                    ++pixels[c];
+                    break;
+                }
+    }
+    return int(std::count_if(pixels.begin(), pixels.end(), [](long long n) { return n > kSpeck; }));
+}
+
 struct Case {
     const char *name;
     RigKind kind;
@@ -161,6 +188,7 @@ struct Summary {
     double maxAreaChangePct = 0.0;
     std::vector<double> applyMs; // Apply Pose's own time per drawing
     int fillCountChanged = 0;
+    int visibleCountChanged = 0;
     int failed = 0;
 };
 
@@ -196,6 +224,7 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
         finbook::testing::darkPixels(framePicture(doc, 0, t, kPicture, true));
     const int fillsBefore = int(doc.group(g)->fills.size());
     const int shownBefore = shownFills(*doc.group(g), closeGap);
+    const int visibleBefore = visibleFills(doc.group(g)->fills, posed);
     QElapsedTimer clock;
     clock.start();
     doc.undoStack()->push(new ApplyPoseCommand(&doc, g));
@@ -206,6 +235,7 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     const finbook::testing::PictureAgreement cmp = finbook::testing::comparePictures(posed, baked);
     const int fillsAfter = int(doc.group(g)->fills.size());
     const int shownAfter = shownFills(*doc.group(g), closeGap);
+    const int visibleAfter = visibleFills(doc.group(g)->fills, baked);
     const double areaChange =
         filledBefore > 0 ? 100.0 * double(filledAfter - filledBefore) / double(filledBefore) : 0.0;
     row.insert(QStringLiteral("agree_pct"), cmp.agreePct);
@@ -216,6 +246,8 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     row.insert(QStringLiteral("fills_after"), fillsAfter);
     row.insert(QStringLiteral("fills_shown_before"), shownBefore);
     row.insert(QStringLiteral("fills_shown_after"), shownAfter);
+    row.insert(QStringLiteral("fills_visible_before"), visibleBefore);
+    row.insert(QStringLiteral("fills_visible_after"), visibleAfter);
     row.insert(QStringLiteral("apply_ms"), applyMs);
     summary.applyMs.push_back(applyMs);
     summary.agree.push_back(cmp.agreePct);
@@ -225,6 +257,7 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     }
     summary.maxAreaChangePct = std::max(summary.maxAreaChangePct, std::abs(areaChange));
     summary.fillCountChanged += shownBefore != shownAfter;
+    summary.visibleCountChanged += visibleBefore != visibleAfter;
     if (!pngDir.isEmpty()) {
         QImage sheet(3 * kPicture, kPicture, QImage::Format_RGB32);
         QPainter painter(&sheet);
@@ -347,6 +380,7 @@ int benchBake(const QStringList &argsIn)
                                          [](double p) { return p < 99.5; })));
             row.insert(QStringLiteral("filled_change_pct_max"), s.maxAreaChangePct);
             row.insert(QStringLiteral("shown_fill_count_changed"), s.fillCountChanged);
+            row.insert(QStringLiteral("visible_fill_count_changed"), s.visibleCountChanged);
             row.insert(QStringLiteral("apply_ms_median"), finbook::bench::median(s.applyMs));
             row.insert(QStringLiteral("apply_ms_max"),
                        *std::max_element(s.applyMs.begin(), s.applyMs.end()));
