@@ -905,6 +905,9 @@ void TestPoseBake::realDrawingsKeepTheirColours_data()
     QTest::newRow("bird, linear blend")
         << QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/quickdraw_bird_5635633911431168.json")
         << int(SkinningMode::LinearBlend);
+    QTest::newRow("kangaroo, cut-out")
+        << QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/quickdraw_kangaroo_6173000183316480.json")
+        << int(SkinningMode::CutOut);
 }
 
 void TestPoseBake::realDrawingsKeepTheirColours()

@@ -19,6 +19,10 @@ namespace {
 // Bisection steps for where a segment enters or leaves a cover: 2⁻¹⁴ of a segment a few px
 // long is far below what a pen shows.
 constexpr int kCrossingSteps = 14;
+// A hidden run shorter than this (px, and than half the pen) shows: a cover's edge that grazes a
+// line, often at a joint where the line ends, splits off a stub that the regions join to the
+// wrong line, opening the loop the line closed (a body losing its fill after Apply Pose).
+constexpr double kShortestHiddenRun = 1.0;
 
 // The fills each layer draws over the layers below it, with their bounds for a quick reject.
 class Covers {
@@ -153,6 +157,30 @@ std::vector<Run> runsOf(const std::vector<Segment> &segments, const Covers &cove
     return runs;
 }
 
+// `runs` with the hidden ones shorter than `shortest` shown, and runs of one kind that follow
+// each other joined (each begins where the one before ends).
+std::vector<Run> withoutSlivers(std::vector<Run> runs, double shortest)
+{
+    for (Run &run : runs) {
+        double length = 0.0;
+        for (std::size_t k = 1; k < run.points.size() && length < shortest; ++k)
+            length += std::hypot(double(run.points[k].x - run.points[k - 1].x),
+                                 double(run.points[k].y - run.points[k - 1].y));
+        if (!run.shows && length < shortest)
+            run.shows = true;
+    }
+    std::vector<Run> joined;
+    for (Run &run : runs) {
+        if (!joined.empty() && joined.back().shows == run.shows && !run.points.empty()) {
+            std::vector<StrokePoint> &points = joined.back().points;
+            points.insert(points.end(), run.points.begin() + 1, run.points.end());
+            continue;
+        }
+        joined.push_back(std::move(run));
+    }
+    return joined;
+}
+
 } // namespace
 
 std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<PaintLayer> &layers,
@@ -182,7 +210,9 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<Pai
         // the line posedStrokes makes. A hidden run kept is a hidden line (kHiddenLineColor:
         // no renderer draws it, no region ends on it), so that the line stays whole and still
         // closes its loop by itself (rest_shade.h inflates the body as the whole body).
-        std::vector<Run> runs = runsOf(layeredSegments(group, i, points), covers);
+        std::vector<Run> runs =
+            withoutSlivers(runsOf(layeredSegments(group, i, points), covers),
+                           std::min(kShortestHiddenRun, 0.5 * double(stroke.data->width)));
         std::erase_if(runs, [hidden](const Run &run) {
             return !run.shows &&
                    (hidden == HiddenLines::Drop ||
