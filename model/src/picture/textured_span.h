@@ -108,6 +108,21 @@ inline __m128i scale16(__m128i x, __m128i a)
         _mm_add_epi16(_mm_add_epi16(t, _mm_srli_epi16(t, 8)), _mm_set1_epi16(128)), 8);
 }
 
+// The texel at the top left of each of N neighbouring pixels' samples (u, v at the first,
+// 32.32 relative to texel centres; du, dv per pixel): a lane past the span (from `count` on)
+// takes the first's, a texel that exists.
+template <int N>
+[[gnu::always_inline]] inline void texelsOf(const Raster &r, std::int64_t u, std::int64_t v,
+                                            std::int64_t du, std::int64_t dv, int count,
+                                            const std::uint32_t *(&texel)[N])
+{
+    texel[0] = r.texture + (v >> 32) * r.textureStride + (u >> 32);
+    for (int i = 1; i < N; ++i)
+        texel[i] = i < count
+                       ? r.texture + ((v + i * dv) >> 32) * r.textureStride + ((u + i * du) >> 32)
+                       : texel[0];
+}
+
 // Stores the first `count` (1..4) pixels of `pixels`, and nothing past them: no read of the
 // target, which a pass that only overwrites should not wait for.
 inline void storePixels(std::uint32_t *out, __m128i pixels, int count)
@@ -166,11 +181,7 @@ inline __m128i bilinearPair(const std::uint32_t *pi, const std::uint32_t *pj, qs
                                             std::int64_t v, const FourSteps &steps, int count)
 {
     const std::uint32_t *texel[4];
-    texel[0] = r.texture + (v >> 32) * r.textureStride + (u >> 32);
-    for (int i = 1; i < 4; ++i) // a lane past the span takes the first's texel, one that exists
-        texel[i] = i < count ? r.texture + ((v + i * steps.dv) >> 32) * r.textureStride +
-                                   ((u + i * steps.du) >> 32)
-                             : texel[0];
+    texelsOf(r, u, v, steps.du, steps.dv, count, texel);
     // The weights are bits 24..31 of u and v: exact in wrapping 32-bit arithmetic.
     const __m128i wx =
         _mm_srli_epi32(_mm_add_epi32(_mm_set1_epi32(int(std::uint32_t(u))), steps.lowU), 24);
@@ -281,11 +292,7 @@ drawEight(const Raster &r, std::uint32_t *out, std::int64_t u, std::int64_t v,
     const __m256i wy = _mm256_srli_epi32(
         _mm256_add_epi32(_mm256_set1_epi32(int(std::uint32_t(v))), steps.lowV), 24);
     const std::uint32_t *texel[8];
-    texel[0] = r.texture + (v >> 32) * r.textureStride + (u >> 32);
-    for (int i = 1; i < 8; ++i) // a lane past the span takes the first's texel, one that exists
-        texel[i] = i < count ? r.texture + ((v + i * steps.dv) >> 32) * r.textureStride +
-                                   ((u + i * steps.du) >> 32)
-                             : texel[0];
+    texelsOf(r, u, v, steps.du, steps.dv, count, texel);
     const __m256i w11 =
         _mm256_srli_epi32(_mm256_add_epi32(_mm256_mullo_epi16(wx, wy), _mm256_set1_epi32(128)), 8);
     const __m256i w10 = _mm256_sub_epi32(wx, w11), w01 = _mm256_sub_epi32(wy, w11);
