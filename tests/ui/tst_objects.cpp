@@ -277,10 +277,11 @@ void TestObjects::mergeRefusedWhereLinesWouldCoverAPicture()
     const Id frame = f.doc.frameAt(0).id;
     auto *import = new model::ImportPictureCommand(&f.doc, frame, -1, {*picture});
     f.doc.undoStack()->push(import);
-    f.doc.undoStack()->clear();
+    const Id pictureObject = import->objectIds().front();
+    f.doc.undoStack()->clear(); // deletes the command
     const model::Frame before = f.doc.frameAt(0);
     // The picture (on top) merged down into C, whose lines it covers: refused, with a reason.
-    f.state->setCurrentGroupId(import->objectIds().front());
+    f.state->setCurrentGroupId(pictureObject);
     QSignalSpy message(f.actions.get(), &ui::ObjectActions::message);
     f.actions->merge()->trigger();
     QCOMPARE(message.count(), 1);
