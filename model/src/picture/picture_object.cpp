@@ -297,15 +297,8 @@ Expected<std::shared_ptr<const ObjectPicture>, QString> stackedPicture(const Str
 {
     const bool hasBelow = below.picture && pictureIsValid(*below.picture);
     const bool hasAbove = above.picture && pictureIsValid(*above.picture);
-    if (!hasBelow || !hasAbove) {
-        if (!hasBelow && !hasAbove)
-            return unexpected(
-                pictureTr(QT_TRANSLATE_NOOP("PictureImport", "The object has no picture.")));
-        const StrokeGroup &only = hasBelow ? below : above;
-        if (!only.isDeformed())
-            return only.picture; // the very same picture: nothing resampled
-        return bakedPicture(only);
-    }
+    if (!hasBelow || !hasAbove) // the one picture there is, the very same when not posed
+        return bakedPicture(hasBelow ? below : above);
     return drawnPicture({&below, &above},
                         shownPictureBounds(below).united(shownPictureBounds(above)));
 }

@@ -17,7 +17,8 @@
 
 namespace finbook::model::picture_detail {
 
-// Which pixel kernel drawSpan uses; all give the same pixels bit for bit.
+// Which pixel kernel the spans are drawn with (drawSpanWith's groups); all give the same pixels
+// bit for bit.
 enum class SpanKernel { Scalar, Sse2, Avx2 };
 
 // The target and the texture as plain memory.
@@ -140,7 +141,7 @@ inline void storePixels(std::uint32_t *out, __m128i pixels, int count)
         *out = std::uint32_t(_mm_cvtsi128_si32(pixels));
 }
 
-// One span's steps for drawFour: u and v as 32.32 per pixel, and the low words of 0..3 steps.
+// A triangle's steps for drawFour: u and v as 32.32 per pixel, and the low words of 0..3 steps.
 struct FourSteps {
     std::int64_t du, dv;
     __m128i lowU, lowV; // 32-bit lanes: (i · du) mod 2^32, (i · dv) mod 2^32 for i = 0..3
@@ -174,9 +175,9 @@ inline __m128i bilinearPair(const std::uint32_t *pi, const std::uint32_t *pj, qs
 
 // Four neighbouring pixels whose samples all lie inside the texture's interior (u, v at the
 // first, 32.32 relative to texel centres), sampled and composited at once. The same weights,
-// sums and roundings as sampleInterior, scalePixel and the source-over of drawSpan's scalar
-// path, so the same pixels bit for bit: a clear source leaves the target as it was
-// (x · 255 / 255 rounds back to x) and an opaque one replaces it.
+// sums and roundings as sampleInterior, scalePixel and the source-over of drawOne, so the same
+// pixels bit for bit: a clear source leaves the target as it was (x · 255 / 255 rounds back to x)
+// and an opaque one replaces it.
 [[gnu::always_inline]] inline void drawFour(const Raster &r, std::uint32_t *out, std::int64_t u,
                                             std::int64_t v, const FourSteps &steps, int count)
 {
@@ -368,7 +369,6 @@ inline void drawOne(const Raster &r, std::uint32_t *out, std::int64_t u, std::in
 // No wide path: every pixel by drawOne.
 struct OneByOne {
     static constexpr int kPixels = 0;
-    static constexpr bool kReadsPastSpan = false;
     OneByOne(const FixedPlane &, std::uint32_t) {}
     void draw(const Raster &, std::uint32_t *, std::int64_t, std::int64_t, int) const {}
 };
@@ -376,7 +376,6 @@ struct OneByOne {
 #if defined(__SSE2__)
 struct FourAtOnce {
     static constexpr int kPixels = 4;
-    static constexpr bool kReadsPastSpan = true; // to composite; writes only the span's pixels
     FourSteps steps;
     FourAtOnce(const FixedPlane &p, std::uint32_t alpha)
         : steps(fourSteps(p, alpha))
@@ -392,7 +391,6 @@ struct FourAtOnce {
 #if defined(FINBOOK_TEXTURE_AVX2)
 struct EightAtOnce {
     static constexpr int kPixels = 8;
-    static constexpr bool kReadsPastSpan = true; // to composite; writes only the span's pixels
     EightSteps steps;
     __attribute__((target("avx2"))) EightAtOnce(const FixedPlane &p, std::uint32_t alpha)
         : steps(eightSteps(p, alpha))
@@ -429,13 +427,14 @@ template <class Group>
     };
     std::uint32_t *out = r.target + qsizetype(y) * r.targetStride;
     for (int x = x0; x <= x1;) {
-        // A group of up to kPixels pixels, the last one of a span cut short at its end (a
-        // kernel that reads whole groups stays inside the row). The interior is a box and
+        // A group of up to kPixels pixels, the last one of a span cut short at its end (the
+        // wide kernels read a whole group of the target to composite, so it stays inside the
+        // row; they write only the span's pixels). The interior is a box and
         // u, v are linear along the span: when the first and the last of a group sample inside
         // it, so do those between.
         if constexpr (Group::kPixels > 0) {
             const int count = std::min(Group::kPixels, x1 - x + 1);
-            if ((!Group::kReadsPastSpan || x + Group::kPixels <= r.width) &&
+            if (x + Group::kPixels <= r.width &&
                 (inside || (interior(u, v) &&
                             interior(u + (count - 1) * p.dudx, v + (count - 1) * p.dvdx)))) {
                 group.draw(r, out + x, u, v, count);
