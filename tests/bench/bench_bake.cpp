@@ -10,11 +10,15 @@
 // filled_px before and after (fills alone), fills before and after, how many fills own a face
 // of the regions (fills_shown: a fill may own only faces that show nothing, a zero-area face or
 // one under another fill), and how many show on the picture (fills_visible: each fill has a
-// colour of its own; more than 12 px of it).
+// colour of its own; more than 12 px of it), and the filled area as the picture shows it
+// (shown_filled_px before and after, shown_filled_change_pct: the fills' colours, so no fill
+// under ink).
 // A last line per rig kind sums up: bake_agree_pct_min and bake_agree_pct_median, the worst
-// drawing, the largest filled-area change, how many drawings changed their fill count (faces
-// owned: shown_fill_count_changed; on the picture: visible_fill_count_changed), and
-// Apply Pose's own time (apply_ms per drawing; median and max, on the UI thread in the app).
+// drawing, the largest filled-area change (fills alone, and as shown), how many drawings
+// changed their fill count (faces owned: shown_fill_count_changed; on the picture:
+// visible_fill_count_changed), how many meet all three targets (meets_all_targets: agreement
+// ≥ 99.5 %, filled area within 0.5 %, the same fills on the picture), and Apply Pose's own
+// time (apply_ms per drawing; median and max, on the UI thread in the app).
 // --png writes, per drawing and rig, the posed picture, the baked one and the differences;
 // --rig pins|cage|skeleton_rigid|skeleton_blend|skeleton_cut_out measures that one alone;
 // --faces outlines the baked drawing's faces (green) and gap closures (magenta) on the
@@ -142,8 +146,14 @@ int shownFills(const StrokeGroup &group, double closeGap)
 // A fill shown on fewer pixels of the compared pictures is a speck (as tst_pose_bake's).
 constexpr long long kSpeck = 12;
 
-// The fills' colours (each fill has its own) that show on more than a speck of `picture`.
-int visibleFills(const std::vector<Fill> &fills, const QImage &picture)
+// The fills as `picture` shows them (each fill has a colour of its own): how many show on more
+// than a speck, and the pixels of their colours (the filled area the eye sees: none under ink).
+struct VisibleFills {
+    int count = 0;
+    long long pixels = 0;
+};
+
+VisibleFills visibleFills(const std::vector<Fill> &fills, const QImage &picture)
 {
     std::vector<QRgb> colours;
     for (const Fill &fill : fills)
@@ -159,7 +169,12 @@ int visibleFills(const std::vector<Fill> &fills, const QImage &picture)
                     break;
                 }
     }
-    return int(std::count_if(pixels.begin(), pixels.end(), [](long long n) { return n > kSpeck; }));
+    VisibleFills out;
+    out.count =
+        int(std::count_if(pixels.begin(), pixels.end(), [](long long n) { return n > kSpeck; }));
+    for (long long n : pixels)
+        out.pixels += n;
+    return out;
 }
 
 struct Case {
@@ -186,6 +201,8 @@ struct Summary {
     QString worst;
     double worstPct = 101.0;
     double maxAreaChangePct = 0.0;
+    double maxShownAreaChangePct = 0.0;
+    int meetsAll = 0;
     std::vector<double> applyMs; // Apply Pose's own time per drawing
     int fillCountChanged = 0;
     int visibleCountChanged = 0;
@@ -224,7 +241,7 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
         finbook::testing::darkPixels(framePicture(doc, 0, t, kPicture, true));
     const int fillsBefore = int(doc.group(g)->fills.size());
     const int shownBefore = shownFills(*doc.group(g), closeGap);
-    const int visibleBefore = visibleFills(doc.group(g)->fills, posed);
+    const VisibleFills visibleBefore = visibleFills(doc.group(g)->fills, posed);
     QElapsedTimer clock;
     clock.start();
     doc.undoStack()->push(new ApplyPoseCommand(&doc, g));
@@ -235,7 +252,7 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     const finbook::testing::PictureAgreement cmp = finbook::testing::comparePictures(posed, baked);
     const int fillsAfter = int(doc.group(g)->fills.size());
     const int shownAfter = shownFills(*doc.group(g), closeGap);
-    const int visibleAfter = visibleFills(doc.group(g)->fills, baked);
+    const VisibleFills visibleAfter = visibleFills(doc.group(g)->fills, baked);
     const double areaChange =
         filledBefore > 0 ? 100.0 * double(filledAfter - filledBefore) / double(filledBefore) : 0.0;
     row.insert(QStringLiteral("agree_pct"), cmp.agreePct);
@@ -246,8 +263,15 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     row.insert(QStringLiteral("fills_after"), fillsAfter);
     row.insert(QStringLiteral("fills_shown_before"), shownBefore);
     row.insert(QStringLiteral("fills_shown_after"), shownAfter);
-    row.insert(QStringLiteral("fills_visible_before"), visibleBefore);
-    row.insert(QStringLiteral("fills_visible_after"), visibleAfter);
+    row.insert(QStringLiteral("fills_visible_before"), visibleBefore.count);
+    row.insert(QStringLiteral("fills_visible_after"), visibleAfter.count);
+    const double shownAreaChange =
+        visibleBefore.pixels > 0 ? 100.0 * double(visibleAfter.pixels - visibleBefore.pixels) /
+                                       double(visibleBefore.pixels)
+                                 : 0.0;
+    row.insert(QStringLiteral("shown_filled_px_before"), double(visibleBefore.pixels));
+    row.insert(QStringLiteral("shown_filled_px_after"), double(visibleAfter.pixels));
+    row.insert(QStringLiteral("shown_filled_change_pct"), shownAreaChange);
     row.insert(QStringLiteral("apply_ms"), applyMs);
     summary.applyMs.push_back(applyMs);
     summary.agree.push_back(cmp.agreePct);
@@ -257,7 +281,12 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     }
     summary.maxAreaChangePct = std::max(summary.maxAreaChangePct, std::abs(areaChange));
     summary.fillCountChanged += shownBefore != shownAfter;
-    summary.visibleCountChanged += visibleBefore != visibleAfter;
+    summary.visibleCountChanged += visibleBefore.count != visibleAfter.count;
+    summary.maxShownAreaChangePct =
+        std::max(summary.maxShownAreaChangePct, std::abs(shownAreaChange));
+    // The three targets: agreement, filled area (under ink too) and the same fills.
+    summary.meetsAll += cmp.agreePct >= 99.5 && std::abs(areaChange) <= 0.5 &&
+                        visibleBefore.count == visibleAfter.count;
     if (!pngDir.isEmpty()) {
         QImage sheet(3 * kPicture, kPicture, QImage::Format_RGB32);
         QPainter painter(&sheet);
@@ -379,6 +408,8 @@ int benchBake(const QStringList &argsIn)
                        int(std::count_if(s.agree.begin(), s.agree.end(),
                                          [](double p) { return p < 99.5; })));
             row.insert(QStringLiteral("filled_change_pct_max"), s.maxAreaChangePct);
+            row.insert(QStringLiteral("shown_filled_change_pct_max"), s.maxShownAreaChangePct);
+            row.insert(QStringLiteral("meets_all_targets"), s.meetsAll);
             row.insert(QStringLiteral("shown_fill_count_changed"), s.fillCountChanged);
             row.insert(QStringLiteral("visible_fill_count_changed"), s.visibleCountChanged);
             row.insert(QStringLiteral("apply_ms_median"), finbook::bench::median(s.applyMs));
