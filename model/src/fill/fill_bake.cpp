@@ -28,6 +28,7 @@
 #include <numbers>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 
 namespace finbook::model {
 
@@ -96,37 +97,103 @@ void paintFaces(IndexPicture &picture, const ObjectRegions &regions)
 }
 
 // The two index pictures over the baked faces and the posed fills: per pixel, the baked face
-// (−1 none) and the fill the pose showed there (−1 none).
+// (−1 none) and the fill the pose showed there (−1 none). (The seams and the agreement look at
+// every pixel several times: read through pointers kept, not QImage's calls.)
 struct FacesAndFills {
     IndexPicture faces, fills;
     int width = 0, height = 0;
-    int face(int x, int y) const { return pixel(faces, x, y); }
-    int fill(int x, int y) const { return pixel(fills, x, y); }
+    int face(int x, int y) const { return colourIndex(m_faces[at(x, y)]); }
+    int fill(int x, int y) const { return colourIndex(m_fills[at(x, y)]); }
+    // Row y of either picture, raw (colourIndex reads it).
+    const QRgb *faceRow(int y) const { return m_faces + at(0, y); }
+    const QRgb *fillRow(int y) const { return m_fills + at(0, y); }
+
+    void readOut()
+    {
+        width = faces.image.width();
+        height = faces.image.height();
+        // Both are RGB32 pictures of one size, whose lines QImage packs without padding.
+        m_stride = std::size_t(faces.image.bytesPerLine()) / sizeof(QRgb);
+        m_faces = reinterpret_cast<const QRgb *>(std::as_const(faces.image).constBits());
+        m_fills = reinterpret_cast<const QRgb *>(std::as_const(fills.image).constBits());
+    }
 
 private:
-    static int pixel(const IndexPicture &p, int x, int y)
-    {
-        return colourIndex(reinterpret_cast<const QRgb *>(p.image.constScanLine(y))[x]);
-    }
+    std::size_t at(int x, int y) const { return std::size_t(y) * m_stride + std::size_t(x); }
+    std::size_t m_stride = 0;
+    const QRgb *m_faces = nullptr;
+    const QRgb *m_fills = nullptr;
 };
 
-FacesAndFills facesAndFills(const ObjectRegions &regions, const std::vector<PaintLayer> &layers)
+} // namespace
+
+// What ShownPose keeps painted: the pose's fills as painted (paintLayers), their index picture
+// over the last box asked for, and the inked lines' pixels over the last box and lines asked
+// for. Apply Pose weighs a dozen bakes whose faces mostly span one box.
+struct ShownPose::Painted {
+    std::optional<std::vector<PaintLayer>> layers;
+    QRectF layersBox;
+    QRectF fillsBox;
+    QImage fills; // an index picture (IndexPicture) over fillsBox
+    QTransform fillsToPixels;
+    QRectF inkBox;
+    std::vector<const StrokeData *> inkLines;
+    std::vector<char> ink;
+};
+
+ShownPose::ShownPose(const StrokeGroup &group, double closeGap)
+    : m_group(group)
+    , m_closeGap(closeGap)
+    , m_painted(std::make_unique<Painted>())
+{}
+
+ShownPose::~ShownPose() = default;
+
+namespace {
+
+// The pose's fills as every renderer paints them (a hidden object keeps its fills too), and
+// their bounding box, painted once.
+const std::vector<PaintLayer> &shownLayers(const ShownPose &pose, QRectF *box = nullptr)
+{
+    ShownPose::Painted &painted = pose.painted();
+    if (!painted.layers) {
+        DocumentSettings settings;
+        settings.closeGap = pose.closeGap();
+        StrokeGroup shown = pose.group();
+        shown.visible = true;
+        painted.layers = paintLayers(shown, settings);
+        for (const PaintLayer &layer : *painted.layers)
+            for (const FillItem &item : layer.fills)
+                painted.layersBox = painted.layersBox.united(item.path.boundingRect());
+    }
+    if (box)
+        *box = painted.layersBox;
+    return *painted.layers;
+}
+
+FacesAndFills facesAndFills(const ObjectRegions &regions, const ShownPose &pose)
 {
     QRectF box;
-    for (const PaintLayer &layer : layers)
-        for (const FillItem &item : layer.fills)
-            box = box.united(item.path.boundingRect());
+    const std::vector<PaintLayer> &layers = shownLayers(pose, &box);
     for (int f = 0; f < regions.faceCount(); ++f)
         box = box.united(regions.restPath(f).boundingRect());
     FacesAndFills out;
     out.faces = indexPicture(box);
-    out.fills = indexPicture(box);
-    if (out.faces.image.isNull() || out.fills.image.isNull())
+    if (out.faces.image.isNull())
         return {};
+    ShownPose::Painted &painted = pose.painted();
+    if (painted.fills.isNull() || painted.fillsBox != box) {
+        IndexPicture fills = indexPicture(box);
+        if (fills.image.isNull())
+            return {};
+        paintShownFills(fills, layers);
+        painted.fills = std::move(fills.image);
+        painted.fillsToPixels = fills.toPixels;
+        painted.fillsBox = box;
+    }
+    out.fills = {painted.fills, painted.fillsToPixels}; // shared, read only
     paintFaces(out.faces, regions);
-    paintShownFills(out.fills, layers);
-    out.width = out.faces.image.width();
-    out.height = out.faces.image.height();
+    out.readOut();
     return out;
 }
 
@@ -136,8 +203,8 @@ std::vector<std::unordered_map<int, long long>> coverage(const FacesAndFills &p,
 {
     std::vector<std::unordered_map<int, long long>> out(static_cast<std::size_t>(faceCount));
     for (int y = 0; y < p.height; ++y) {
-        const auto *face = reinterpret_cast<const QRgb *>(p.faces.image.constScanLine(y));
-        const auto *fill = reinterpret_cast<const QRgb *>(p.fills.image.constScanLine(y));
+        const QRgb *face = p.faceRow(y);
+        const QRgb *fill = p.fillRow(y);
         for (int x = 0; x < p.width;) {
             // Runs of one (face, fill) pair are counted at once.
             int end = x + 1;
@@ -177,28 +244,23 @@ std::vector<int> shownFillPerFace(const ObjectRegions &regions,
     return out;
 }
 
-// The regions of the baked drawing (`baked`), the pose (`group`) as painted, and per face the
-// fill the pose showed over most of it (shownFillPerFace).
+// The regions of the baked drawing (`baked`), the pose as painted, and per face the fill the
+// pose showed over most of it (shownFillPerFace).
 struct BakedOwners {
     ObjectRegionsPtr regions;
-    std::vector<PaintLayer> layers;
     FacesAndFills pictures;
     std::vector<int> owner;
 };
 
-BakedOwners bakedOwners(const StrokeGroup &group, const std::vector<Stroke> &baked, double closeGap)
+BakedOwners bakedOwners(const ShownPose &pose, const std::vector<Stroke> &baked)
 {
     StrokeGroup after;
     after.strokes = baked;
     BakedOwners out;
-    out.regions = objectRegions(after, closeGap);
-    DocumentSettings settings;
-    settings.closeGap = closeGap;
-    StrokeGroup shown = group;
-    shown.visible = true; // a hidden object keeps its fills too
-    out.layers = paintLayers(shown, settings);
-    out.pictures = facesAndFills(*out.regions, out.layers);
-    out.owner = shownFillPerFace(*out.regions, out.layers, out.pictures, int(group.fills.size()));
+    out.regions = objectRegions(after, pose.closeGap());
+    out.pictures = facesAndFills(*out.regions, pose);
+    out.owner = shownFillPerFace(*out.regions, shownLayers(pose), out.pictures,
+                                 int(pose.group().fills.size()));
     return out;
 }
 
@@ -230,23 +292,55 @@ bool runsAlongALine(const std::vector<Stroke> &baked, const QLineF &line)
     return true;
 }
 
-// The share of the pixels the pose showed filled, or the baked faces would fill, where the
-// two agree (shownFillAgreement).
-double agreement(const BakedOwners &baking)
+std::vector<char> inkMask(const std::vector<Stroke> &baked, bool closersToo,
+                          const IndexPicture &like, int w, int h, double widthShare = 1.0);
+bool boundingLine(const Stroke &s, bool closersToo);
+
+// inkMask of the inked lines of `baked` over `p`'s pictures, painted once while the box and
+// the lines stay the same (the bakes Apply Pose weighs differ in lines of no ink only).
+const std::vector<char> &inkedPixels(const ShownPose &pose, const std::vector<Stroke> &baked,
+                                     const FacesAndFills &p)
+{
+    ShownPose::Painted &painted = pose.painted();
+    std::vector<const StrokeData *> lines;
+    for (const Stroke &s : baked)
+        if (boundingLine(s, false))
+            lines.push_back(s.data.get());
+    const QRectF box = painted.fillsBox;
+    if (painted.ink.size() != std::size_t(p.width) * std::size_t(p.height) ||
+        painted.inkBox != box || painted.inkLines != lines) {
+        painted.ink = inkMask(baked, false, p.faces, p.width, p.height);
+        painted.inkBox = box;
+        painted.inkLines = std::move(lines);
+    }
+    return painted.ink;
+}
+
+// Of the pixels the pose showed filled, or the baked faces would fill, the share where the two
+// agree: where no inked line of `baked` covers them, and everywhere (shownFillAgreement).
+FillAgreement agreement(const ShownPose &pose, const BakedOwners &baking,
+                        const std::vector<Stroke> &baked)
 {
     const FacesAndFills &p = baking.pictures;
-    long long painted = 0, agreeing = 0;
+    const std::vector<char> &inked = inkedPixels(pose, baked, p);
+    long long painted[2] = {0, 0}, agreeing[2] = {0, 0}; // seen, all
     for (int y = 0; y < p.height; ++y)
         for (int x = 0; x < p.width; ++x) {
             const int face = p.face(x, y);
             const int shown = p.fill(x, y);
             const int kept = face >= 0 ? baking.owner[std::size_t(face)] : -1;
             if (shown >= 0 || kept >= 0) {
-                ++painted;
-                agreeing += shown == kept;
+                const bool seen = !inked[std::size_t(y) * std::size_t(p.width) + std::size_t(x)];
+                painted[0] += seen;
+                agreeing[0] += seen && shown == kept;
+                ++painted[1];
+                agreeing[1] += shown == kept;
             }
         }
-    return painted > 0 ? double(agreeing) / double(painted) : 1.0;
+    const auto share = [&](int k) {
+        return painted[k] > 0 ? double(agreeing[k]) / double(painted[k]) : 1.0;
+    };
+    return {share(0), share(1)};
 }
 
 } // namespace
@@ -278,9 +372,15 @@ double medianInkWidth(const std::vector<Stroke> &strokes)
 std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                  double closeGap)
 {
+    return fillsAfterBake(ShownPose(group, closeGap), baked);
+}
+
+std::vector<Fill> fillsAfterBake(const ShownPose &pose, const std::vector<Stroke> &baked)
+{
+    const StrokeGroup &group = pose.group();
     if (group.fills.empty())
         return {};
-    const BakedOwners baking = bakedOwners(group, baked, closeGap);
+    const BakedOwners baking = bakedOwners(pose, baked);
     const ObjectRegionsPtr &regions = baking.regions;
     const std::vector<int> &owner = baking.owner;
     // Each fill keeps its place in the list on its largest face; its other faces follow.
@@ -317,16 +417,28 @@ std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Str
     return out;
 }
 
-double shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                          double closeGap)
+bool FillAgreement::whole() const
 {
-    if (group.fills.empty())
-        return 1.0;
-    return agreement(bakedOwners(group, baked, closeGap));
+    constexpr double kWhole = 1.0 - 1e-9;
+    return seen >= kWhole && underLinesToo >= kWhole;
+}
+
+FillAgreement shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                 double closeGap)
+{
+    return shownFillAgreement(ShownPose(group, closeGap), baked);
+}
+
+FillAgreement shownFillAgreement(const ShownPose &pose, const std::vector<Stroke> &baked)
+{
+    if (pose.group().fills.empty())
+        return {};
+    return agreement(pose, bakedOwners(pose, baked), baked);
 }
 
 std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                                   double closeGap, const std::function<Id()> &newId)
+                                   double closeGap, const std::function<Id()> &newId,
+                                   GapMatch match)
 {
     if (group.fills.empty() || !group.isDeformed())
         return {};
@@ -346,7 +458,7 @@ std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<S
                                     group.strokes[std::size_t(from)].data
                                 ? group.strokes[std::size_t(from)].data->width
                                 : StrokeData().width;
-        const double near = 2.0 * double(width) + 0.5;
+        const double near = (match == GapMatch::Near ? 2.0 : 0.5) * double(width) + 0.5;
         const auto close = [near](QPointF a, const Eigen::Vector2d &b) {
             return QLineF(a, QPointF(b.x(), b.y())).length() <= near;
         };
@@ -376,6 +488,8 @@ constexpr double kSeamStraighten = 0.75;
 constexpr std::size_t kSeamMostPoints = 4000;
 // A seam ends this far (canvas px) past the edge or seam it meets, as gap closing's links do.
 constexpr double kSeamHairPast = 0.01;
+// ShownColourSeams::seamsAcrossInk: the share of a line's width that bounds a region there.
+constexpr double kThinInkShare = 1.0 / 3.0;
 
 // The four directions between pixel corners: right, down, left, up.
 constexpr int kDx[4] = {1, 0, -1, 0};
@@ -431,7 +545,7 @@ bool boundingLine(const Stroke &s, bool closersToo)
 // Per pixel of a picture (`like`'s transform, w × h), whether a bounding line of `baked`
 // (boundingLine) covers it, drawn at its pen width with round ends.
 std::vector<char> inkMask(const std::vector<Stroke> &baked, bool closersToo,
-                          const IndexPicture &like, int w, int h)
+                          const IndexPicture &like, int w, int h, double widthShare)
 {
     QImage image(w, h, QImage::Format_Grayscale8);
     std::vector<char> out(std::size_t(w) * std::size_t(h), 0);
@@ -447,7 +561,8 @@ std::vector<char> inkMask(const std::vector<Stroke> &baked, bool closersToo,
             QPainterPath path(QPointF(s.data->points.front().x, s.data->points.front().y));
             for (const StrokePoint &q : s.data->points)
                 path.lineTo(q.x, q.y);
-            painter.strokePath(path, QPen(Qt::white, std::clamp(double(s.data->width), 0.0, 64.0),
+            painter.strokePath(path, QPen(Qt::white,
+                                          widthShare * std::clamp(double(s.data->width), 0.0, 64.0),
                                           Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         }
     }
@@ -481,6 +596,42 @@ SeamParts seamParts(const BakedOwners &baking, double scale, double penWidth, do
     out.kept.assign(std::size_t(w) * std::size_t(h), 0);
     std::vector<char> seen(out.kept.size(), 0);
     std::vector<std::pair<int, int>> part, stack;
+    // How far (4-connected steps, picture px) the part's deepest pixel lies from its edge.
+    std::vector<int> depth; // per pixel, while a part is measured; 0 elsewhere
+    const auto deepest = [&](const std::vector<std::pair<int, int>> &pixels) {
+        depth.resize(std::size_t(w) * std::size_t(h), 0);
+        for (const auto &[px, py] : pixels)
+            depth[index(px, py)] = -1; // in the part, not reached yet
+        std::vector<std::pair<int, int>> front, next;
+        const auto inPart = [&](int x, int y) {
+            return x >= 0 && y >= 0 && x < w && y < h && depth[index(x, y)] != 0;
+        };
+        for (const auto &[px, py] : pixels)
+            for (int k = 0; k < 4; ++k)
+                if (!inPart(px + kDx[k], py + kDy[k])) {
+                    depth[index(px, py)] = 1;
+                    front.emplace_back(px, py);
+                    break;
+                }
+        int reached = front.empty() ? 0 : 1;
+        while (!front.empty()) {
+            next.clear();
+            for (const auto &[px, py] : front)
+                for (int k = 0; k < 4; ++k) {
+                    const int nx = px + kDx[k], ny = py + kDy[k];
+                    if (inPart(nx, ny) && depth[index(nx, ny)] < 0) {
+                        depth[index(nx, ny)] = depth[index(px, py)] + 1;
+                        next.emplace_back(nx, ny);
+                    }
+                }
+            if (!next.empty())
+                ++reached;
+            front.swap(next);
+        }
+        for (const auto &[px, py] : pixels)
+            depth[index(px, py)] = 0;
+        return double(reached);
+    };
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const int f = p.face(x, y);
@@ -512,9 +663,16 @@ SeamParts seamParts(const BakedOwners &baking, double scale, double penWidth, do
             // the outline it follows.
             const double area = double(part.size()) / (scale * scale);
             const double perimeter = double(rim) / scale * (std::numbers::pi / 4.0);
-            const bool thickEnough = perimeter > 0.0 &&
-                                     2.0 * area / perimeter >= widerThanPen * penWidth &&
-                                     area >= widerThanPen * 2.0 * penWidth * penWidth;
+            bool thickEnough = perimeter > 0.0 &&
+                               2.0 * area / perimeter >= widerThanPen * penWidth &&
+                               area >= widerThanPen * 2.0 * penWidth * penWidth;
+            // Outside every face, a part that the closest pass (widerThanPen 1) finds joins
+            // the face beside it once its seam closes it (the seam takes up the free ends
+            // whose gap closer left it out: a wedge along an open mouth), so on average it
+            // may be thinner than the pen; somewhere it must be half a pen deep (the strips
+            // that the pictures' rounding leaves along an outline are not).
+            if (!thickEnough && f < 0 && widerThanPen <= 1.0 && perimeter > 0.0)
+                thickEnough = deepest(part) >= std::max(1.0, 0.5 * penWidth * scale);
             if (thickEnough && double(part.size()) >= smallest) {
                 for (const auto &[px, py] : part)
                     out.kept[index(px, py)] = 1;
@@ -557,10 +715,10 @@ std::vector<SeamChain> seamChains(const FacesAndFills &p, const std::vector<char
         edges[corner(x1, y1)] |= std::uint8_t(1u << ((dir + 2) % 4));
     };
     const auto seamBetween = [&](int x0, int y0, int x1, int y1) {
-        const int f = p.face(x0, y0);
-        return p.face(x1, y1) == f && p.fill(x1, y1) != p.fill(x0, y0) &&
-               (kept[index(x0, y0)] || kept[index(x1, y1)]) && !inked[index(x0, y0)] &&
-               !inked[index(x1, y1)];
+        // (Kept pixels are few: tested first.)
+        return (kept[index(x0, y0)] || kept[index(x1, y1)]) && !inked[index(x0, y0)] &&
+               !inked[index(x1, y1)] && p.face(x1, y1) == p.face(x0, y0) &&
+               p.fill(x1, y1) != p.fill(x0, y0);
     };
     bool any = false;
     for (int y = 0; y < h; ++y)
@@ -581,9 +739,11 @@ std::vector<SeamChain> seamChains(const FacesAndFills &p, const std::vector<char
         const int px = dir == 2 ? x - 1 : x, py = dir == 3 ? y - 1 : y;
         return p.face(std::clamp(px, 0, w - 1), std::clamp(py, 0, h - 1));
     };
+    // (A table: without a popcount instruction in the target, std::popcount is a call.)
+    constexpr std::uint8_t kBitsIn[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
     std::vector<std::uint8_t> degreeOf(edges.size());
     for (std::size_t i = 0; i < edges.size(); ++i)
-        degreeOf[i] = std::uint8_t(std::popcount(unsigned(edges[i])));
+        degreeOf[i] = kBitsIn[edges[i] & 15u];
     std::vector<SeamChain> chains;
     const auto walk = [&](int x, int y, int dir) {
         SeamChain chain;
@@ -718,11 +878,18 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
                                   double closeGap, const std::function<Id()> &newId,
                                   double widerThanPen)
 {
+    return shownColourSeams(ShownPose(group, closeGap), baked, newId, widerThanPen);
+}
+
+ShownColourSeams shownColourSeams(const ShownPose &pose, const std::vector<Stroke> &baked,
+                                  const std::function<Id()> &newId, double widerThanPen)
+{
     ShownColourSeams result;
+    const StrokeGroup &group = pose.group();
     if (group.fills.empty() || !group.isDeformed())
         return result;
-    const BakedOwners baking = bakedOwners(group, baked, closeGap);
-    result.bakedAgreement = agreement(baking);
+    const BakedOwners baking = bakedOwners(pose, baked);
+    result.bakedAgreement = agreement(pose, baking, baked);
     const FacesAndFills &p = baking.pictures;
     const int w = p.width, h = p.height;
     if (w <= 0 || h <= 0)
@@ -738,7 +905,7 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
     // along an inked line needs no seam in any variant (the line bounds it once the seams
     // close its gaps); inside a face only the variant that leaves the lines out skips it, and
     // it leaves out the gap closers too (a seam along one would make slivers just the same).
-    std::vector<char> inkedOutside = inkMask(baked, false, p.faces, w, h);
+    std::vector<char> inkedOutside = inkedPixels(pose, baked, p);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
             if (p.face(x, y) >= 0)
@@ -754,7 +921,20 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
     if (!std::equal(chains.begin(), chains.end(), offInk.begin(), offInk.end(), samePoints))
         result.seamsOffInk =
             placedSeams(offInk, baking, inkSegments(baked, true), true, scale, penWidth, newId);
-    if (!result.seams.empty() || !result.seamsOffInk.empty())
+    if (parts.outside) {
+        // Outside every face, where only a third of the pen's ink covers no edge: across the
+        // ink of two lines that overlap without their middles meeting.
+        std::vector<char> thinOutside = inkMask(baked, false, p.faces, w, h, kThinInkShare);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                if (p.face(x, y) >= 0)
+                    thinOutside[std::size_t(y) * std::size_t(w) + std::size_t(x)] = 0;
+        const std::vector<SeamChain> across = seamChains(p, parts.kept, thinOutside);
+        if (!std::equal(chains.begin(), chains.end(), across.begin(), across.end(), samePoints))
+            result.seamsAcrossInk = placedSeams(across, baking, inkSegments(baked, false), false,
+                                                scale, penWidth, newId);
+    }
+    if (!result.seams.empty() || !result.seamsOffInk.empty() || !result.seamsAcrossInk.empty())
         for (const geometry::GapClosure &closure : baking.regions->regions().closures) {
             if (!closure.from.allFinite() || !closure.to.allFinite() || closure.from == closure.to)
                 continue;

@@ -117,63 +117,91 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
     // first part shown with its id; the hidden parts stay as hidden lines).
     std::vector<Stroke> strokes = bakedStrokes(group, closeGap, newId, HiddenLines::KeepUnseen);
     // A gap the pose showed closed stays closed (by a line of no ink) where the baked lines
-    // alone would leave it open.
-    const auto withKeptGaps = [&](std::vector<Stroke> lines) {
-        for (Stroke &closer : keptGapClosers(group, lines, closeGap, newId))
-            lines.push_back(std::move(closer));
-        return lines;
+    // alone would leave it open, or close it a little further along a line (GapMatch::Exact,
+    // tried where it draws in more closers than GapMatch::Near).
+    const auto withKeptGaps = [&](const std::vector<Stroke> &lines) {
+        std::vector<std::vector<Stroke>> ways;
+        for (const GapMatch match : {GapMatch::Near, GapMatch::Exact}) {
+            std::vector<Stroke> closers = keptGapClosers(group, lines, closeGap, newId, match);
+            if (!ways.empty() && ways.front().size() == lines.size() + closers.size())
+                break;
+            ways.push_back(lines);
+            ways.back().insert(ways.back().end(), std::make_move_iterator(closers.begin()),
+                               std::make_move_iterator(closers.end()));
+        }
+        return ways;
     };
     // A cut-out piece's colour ends at its cut, where no line is: a line of no ink keeps the
     // baked regions ending there too (added before the kept gaps: a region they close, a
     // body, no longer lets gap closing close a gap inside it, an eye, that the pose showed
     // closed). Those lines do not find every region of every drawing, so the bake keeps them
     // only where they keep more of the colours the pose showed than the baked lines alone.
+    // Tried in this order, the first of equals kept: without the cut lines, with them, then the
+    // same with the gaps matched exactly.
     std::vector<Stroke> cut = cutOutClosers(group, strokes, closeGap, newId);
-    if (cut.empty()) {
-        strokes = withKeptGaps(std::move(strokes));
-    } else {
-        std::vector<Stroke> withCuts = strokes;
-        withCuts.insert(withCuts.end(), cut.begin(), cut.end());
-        withCuts = withKeptGaps(std::move(withCuts));
-        std::vector<Stroke> without = withKeptGaps(std::move(strokes));
-        strokes = shownFillAgreement(group, withCuts, closeGap) >
-                          shownFillAgreement(group, without, closeGap)
-                      ? std::move(withCuts)
-                      : std::move(without);
+    std::vector<std::vector<Stroke>> without = withKeptGaps(strokes);
+    std::vector<std::vector<Stroke>> withCuts;
+    if (!cut.empty()) {
+        strokes.insert(strokes.end(), cut.begin(), cut.end());
+        withCuts = withKeptGaps(strokes);
     }
-    // Where the baked faces still join colours the pose showed apart, lines of no ink along
-    // the edge between them as painted: the seams, or the seams left off the ink, each with the
-    // gaps closed now kept closed or not, whichever keeps most of what was shown (and only if
-    // that is more than without them). Parts of faces only a little wider than the pen are
-    // tried too when the wider ones leave colours apart (a wedge under a curl: its seam may
-    // make a face the regions keep, or one they merge away, so only the agreement can tell).
-    double best = -1.0;
+    std::vector<std::vector<Stroke>> ways;
+    for (std::size_t i = 0; i < 2; ++i)
+        for (std::vector<std::vector<Stroke>> *set : {&without, &withCuts})
+            if (i < set->size())
+                ways.push_back(std::move((*set)[i]));
+    // Where the baked faces of a way still join colours the pose showed apart, lines of no ink
+    // along the edge between them as painted: the seams, the seams left off the ink, or the
+    // seams across thin ink (outside every face), each with the gaps closed now kept closed or
+    // not, whichever keeps most of what was shown (and only if that is more than without
+    // them). Parts of faces only a little wider than the pen are tried too when the wider ones
+    // leave colours apart (a wedge under a curl: its seam may make a face the regions keep, or
+    // one they merge away, so only the agreement can tell). A way is judged with its seams (a
+    // closer drawn in exactly may lose a colour that only its seams bring back): the ways are
+    // taken best first as they stand, and the search ends once all but a thousandth of what
+    // the pose showed is kept (each further way costs as much again, on the UI thread).
+    constexpr double kKeptEnough = 0.999;
+    const ShownPose shown(group, closeGap); // painted once for every bake weighed
+    std::vector<std::pair<FillAgreement, std::size_t>> order;
+    for (std::size_t i = 0; i < ways.size(); ++i)
+        order.emplace_back(ways.size() > 1 ? shownFillAgreement(shown, ways[i]) : FillAgreement{},
+                           i);
+    std::stable_sort(order.begin(), order.end(),
+                     [](const auto &a, const auto &b) { return a.first > b.first; });
+    FillAgreement best{-1.0, -1.0};
     std::vector<Stroke> chosen;
-    for (const double widerThanPen : {kSeamWiderThanPen, 1.0}) {
-        if (best >= 1.0 - 1e-9)
+    const auto consider = [&](const std::vector<Stroke> &lines, const FillAgreement &agreement) {
+        if (agreement > best) {
+            best = agreement;
+            chosen = lines;
+        }
+    };
+    for (const auto &[bare, i] : order) {
+        if (best.seen >= kKeptEnough && best.underLinesToo >= kKeptEnough)
             break;
-        const ShownColourSeams seams =
-            shownColourSeams(group, strokes, closeGap, newId, widerThanPen);
-        best = std::max(best, seams.bakedAgreement);
-        for (const std::vector<Stroke> *set : {&seams.seams, &seams.seamsOffInk}) {
-            if (set->empty())
-                continue;
-            std::vector<Stroke> with = strokes;
-            with.insert(with.end(), set->begin(), set->end());
-            for (int keep = 0; keep < (seams.keptClosures.empty() ? 1 : 2); ++keep) {
-                if (keep)
-                    with.insert(with.end(), seams.keptClosures.begin(), seams.keptClosures.end());
-                if (const double agreement = shownFillAgreement(group, with, closeGap);
-                    agreement > best) {
-                    best = agreement;
-                    chosen = with;
+        const std::vector<Stroke> &way = ways[i];
+        for (const double widerThanPen : {kSeamWiderThanPen, 1.0}) {
+            if (best.whole())
+                break;
+            const ShownColourSeams seams = shownColourSeams(shown, way, newId, widerThanPen);
+            consider(way, seams.bakedAgreement);
+            for (const std::vector<Stroke> *set :
+                 {&seams.seams, &seams.seamsOffInk, &seams.seamsAcrossInk}) {
+                if (set->empty())
+                    continue;
+                std::vector<Stroke> with = way;
+                with.insert(with.end(), set->begin(), set->end());
+                for (int keep = 0; keep < (seams.keptClosures.empty() ? 1 : 2); ++keep) {
+                    if (keep)
+                        with.insert(with.end(), seams.keptClosures.begin(),
+                                    seams.keptClosures.end());
+                    consider(with, shownFillAgreement(shown, with));
                 }
             }
         }
     }
-    if (!chosen.empty())
-        strokes = std::move(chosen);
-    std::vector<Fill> fills = fillsAfterBake(group, strokes, closeGap);
+    strokes = std::move(chosen);
+    std::vector<Fill> fills = fillsAfterBake(shown, strokes);
     std::shared_ptr<const ObjectPicture> picture = group.picture;
     if (picture) {
         // A pose that cannot be kept as a picture (folded to nothing, too large) leaves it

@@ -18,7 +18,9 @@
 
 #include <finbook/model/fill/fill_regions.h>
 
+#include <compare>
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace finbook::model {
@@ -43,6 +45,29 @@ std::optional<std::vector<Fill>> fillsWithoutFace(const ObjectRegions &regions,
 std::optional<std::vector<Fill>> fillsWithAllFaces(const ObjectRegions &regions,
                                                    const std::vector<Fill> &fills, QRgb color);
 
+// What a posed object (`group`) shows, painted once for the bakes Apply Pose weighs:
+// fillsAfterBake, shownFillAgreement and shownColourSeams each compare a bake with the pose's
+// fills as painted (paintLayers), in pictures over the box of those fills and the bake's
+// faces. Given a ShownPose they paint the fills (and the inked lines) once per box instead of
+// once per call; the forms that take the group make one for the call. Holds `group` by
+// reference (it must outlive this); for one thread at a time.
+class ShownPose {
+public:
+    ShownPose(const StrokeGroup &group, double closeGap);
+    ~ShownPose();
+    ShownPose(const ShownPose &) = delete;
+    ShownPose &operator=(const ShownPose &) = delete;
+    const StrokeGroup &group() const { return m_group; }
+    double closeGap() const { return m_closeGap; }
+    struct Painted; // fill_bake.cpp
+    Painted &painted() const { return *m_painted; }
+
+private:
+    const StrokeGroup &m_group;
+    double m_closeGap;
+    std::unique_ptr<Painted> m_painted;
+};
+
 // The fills of `group` once its pose has become its drawing (`baked`: its posed strokes, ids
 // kept, as Apply Pose to Drawing makes them), so that the baked drawing shows exactly what the
 // pose showed: each face of the baked drawing gets the fill the pose showed over most of it
@@ -55,13 +80,24 @@ std::optional<std::vector<Fill>> fillsWithAllFaces(const ObjectRegions &regions,
 // (undo brings it back).
 std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                  double closeGap);
+std::vector<Fill> fillsAfterBake(const ShownPose &pose, const std::vector<Stroke> &baked);
 
-// The share (0-1) of the area the pose (`group`, posed) shows filled, or the baked drawing
-// would fill, where the baked drawing (`baked`, with the fills fillsAfterBake would give it)
-// shows the same fill: 1 when Apply Pose keeps every colour. Pictures of fill indices at up to
-// 1024 px, as fillsAfterBake's.
-double shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                          double closeGap);
+// How much of the colour the pose (`group`, posed) showed a baked drawing (`baked`, with the
+// fills fillsAfterBake would give it) keeps: of the area the pose shows filled, or the baked
+// drawing would fill, the share (0-1) where the baked drawing shows the same fill; first where
+// no inked line covers it (what the eye sees), then under the lines too (what erasing a line
+// would uncover). Compared in that order: a bake that keeps more of what is seen is better,
+// whatever it does under the lines. Pictures of fill indices at up to 1024 px, as
+// fillsAfterBake's.
+struct FillAgreement {
+    double seen = 1.0;
+    double underLinesToo = 1.0;
+    auto operator<=>(const FillAgreement &) const = default;
+    bool whole() const; // Apply Pose keeps every colour
+};
+FillAgreement shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                 double closeGap);
+FillAgreement shownFillAgreement(const ShownPose &pose, const std::vector<Stroke> &baked);
 
 // The colour of a line of no ink that closes a gap (keptGapClosers): it bounds regions like any
 // stroke, and no renderer draws it (render.h draws no stroke of alpha 0).
@@ -81,8 +117,18 @@ double medianInkWidth(const std::vector<Stroke> &strokes);
 // Harmony's Close Gap tool draws invisible strokes), with new ids from `newId`, to add to the
 // baked strokes; it is drawn by no renderer, and erasing it opens the gap. A gap that a line
 // of no ink in `baked` already runs across (a cut-out closer) gets none.
+//
+// A gap counts as closed by the baked drawing when one of its closers ends near both ends of
+// the one the pose showed. GapMatch::Near allows two pen widths (the baked regions find their
+// own closer; an extra line beside it would only make slivers). GapMatch::Exact allows half a
+// pen width: a closer the baked regions start a little further along a line (posed, a rest
+// closer runs from where the rest drawing found it) leaves a wedge on the other side that the
+// pose showed filled or empty, so the pose's own closer is drawn in; which keeps more of what
+// the pose showed depends on the drawing (Apply Pose tries both).
+enum class GapMatch { Near, Exact };
 std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                                   double closeGap, const std::function<Id()> &newId);
+                                   double closeGap, const std::function<Id()> &newId,
+                                   GapMatch match = GapMatch::Near);
 
 // Where a face of the baked drawing (`baked`) would take one colour but the pose showed two
 // (or a colour and none) on it, say where a limb's cut or a fold left no line between them,
@@ -102,13 +148,20 @@ struct ShownColourSeams {
     // in part), a seam a hair beside it makes slivers that the regions merge, and may join
     // faces that were apart. Empty when no seam runs under ink.
     std::vector<Stroke> seamsOffInk;
+    // Outside every face, the seams also across ink that only a line's edge covers: two lines
+    // whose inks overlap but whose middles do not meet (a line's end stopping a little short
+    // of another, its free end taken by a gap closer elsewhere) look closed, and the pose
+    // showed the colour closed in there, but they bound no region. Where a third of the pen's
+    // width would leave an edge of such a part bare, a seam crosses it. Empty when no part lies
+    // outside every face or these are the seams.
+    std::vector<Stroke> seamsAcrossInk;
     // The gaps the baked regions close, as lines of no ink: gap closing leaves a gap open
     // whose middle lies in a face already closed, so a seam that closes a face could open a
     // region elsewhere; with these added too, it cannot. (They also keep gaps from closing
     // otherwise where that was right, so Apply Pose tries each set of seams with and without
     // them.)
     std::vector<Stroke> keptClosures;
-    double bakedAgreement = 1.0; // shownFillAgreement of `baked`, computed on the way
+    FillAgreement bakedAgreement; // shownFillAgreement of `baked`, computed on the way
 };
 // The regions merge a face thinner than the pen into a neighbour (geometry/regions.h), and a
 // strip along a line or a face's edge is the pictures' rounding: a part gets a seam only when
@@ -116,6 +169,9 @@ struct ShownColourSeams {
 constexpr double kSeamWiderThanPen = 1.25;
 ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                   double closeGap, const std::function<Id()> &newId,
+                                  double widerThanPen = kSeamWiderThanPen);
+ShownColourSeams shownColourSeams(const ShownPose &pose, const std::vector<Stroke> &baked,
+                                  const std::function<Id()> &newId,
                                   double widerThanPen = kSeamWiderThanPen);
 
 // A cut-out pose's pieces end their colour where they are cut, where no line is: a limb
