@@ -128,16 +128,16 @@ private:
 } // namespace
 
 // What ShownPose keeps painted: the pose's fills as painted (paintLayers), their index picture
-// over the last box asked for, and the inked lines' pixels over the last box and lines asked
-// for. Apply Pose weighs a dozen bakes whose faces mostly span one box.
+// over the last box asked for, and the inked lines' pixels over the last picture and lines
+// asked for. Apply Pose weighs a dozen bakes whose faces mostly span one box.
 struct ShownPose::Painted {
     std::optional<std::vector<PaintLayer>> layers;
     QRectF layersBox;
     QRectF fillsBox;
     QImage fills; // an index picture (IndexPicture) over fillsBox
     QTransform fillsToPixels;
-    QRectF inkBox;
-    std::vector<const StrokeData *> inkLines;
+    QTransform inkToPixels;              // with the size of `ink`, the picture it covers
+    std::vector<StrokeDataPtr> inkLines; // held, so no other line takes their address
     std::vector<char> ink;
 };
 
@@ -302,15 +302,14 @@ const std::vector<char> &inkedPixels(const ShownPose &pose, const std::vector<St
                                      const FacesAndFills &p)
 {
     ShownPose::Painted &painted = pose.painted();
-    std::vector<const StrokeData *> lines;
+    std::vector<StrokeDataPtr> lines;
     for (const Stroke &s : baked)
         if (boundingLine(s, false))
-            lines.push_back(s.data.get());
-    const QRectF box = painted.fillsBox;
+            lines.push_back(s.data);
     if (painted.ink.size() != std::size_t(p.width) * std::size_t(p.height) ||
-        painted.inkBox != box || painted.inkLines != lines) {
+        painted.inkToPixels != p.faces.toPixels || painted.inkLines != lines) {
         painted.ink = inkMask(baked, false, p.faces, p.width, p.height);
-        painted.inkBox = box;
+        painted.inkToPixels = p.faces.toPixels;
         painted.inkLines = std::move(lines);
     }
     return painted.ink;
