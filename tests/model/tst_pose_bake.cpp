@@ -952,39 +952,35 @@ void TestPoseBake::realDrawingsKeepTheirColours_data()
     QTest::addColumn<QString>("file");
     QTest::addColumn<int>("mode");
     QTest::addColumn<bool>("areaKept"); // the filled area within kAreaChangePct too
-    QTest::newRow("octopus, cut-out")
-        << QStringLiteral("sketches/quickdraw_octopus_4512633778601984.json")
-        << int(SkinningMode::CutOut) << true;
-    QTest::newRow("parrot, cut-out")
-        << QStringLiteral("review/sketches/quickdraw_parrot_5460481487667200.json")
-        << int(SkinningMode::CutOut) << true;
-    QTest::newRow("bear, cut-out")
-        << QStringLiteral("review/sketches/quickdraw_bear_6552723749076992.json")
-        << int(SkinningMode::CutOut) << true;
-    QTest::newRow("angel, cut-out")
-        << QStringLiteral("sketches/quickdraw_angel_5575041318125568.json")
-        << int(SkinningMode::CutOut) << true;
-    QTest::newRow("parrot, rigid")
-        << QStringLiteral("review/sketches/quickdraw_parrot_5460481487667200.json")
-        << int(SkinningMode::Rigid) << true;
+    const auto row = [](const char *name, const QString &file, SkinningMode mode,
+                        bool areaKept = true) {
+        QTest::newRow(name) << file << int(mode) << areaKept;
+    };
     // Kept with the tests (tests/data/README.md), so that it runs wherever they do.
-    QTest::newRow("bird, linear blend")
-        << QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/quickdraw_bird_5635633911431168.json")
-        << int(SkinningMode::LinearBlend) << true;
-    QTest::newRow("kangaroo, cut-out")
-        << QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/quickdraw_kangaroo_6173000183316480.json")
-        << int(SkinningMode::CutOut) << true;
-    QTest::newRow("flamingo, rigid")
-        << QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/quickdraw_flamingo_6406751433785344.json")
-        << int(SkinningMode::Rigid) << true;
-    QTest::newRow("hedgehog, cut-out")
-        << QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/quickdraw_hedgehog_5292410760331264.json")
-        << int(SkinningMode::CutOut) << true;
+    const auto ours = [](const char *file) {
+        return QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/") + QLatin1String(file);
+    };
+    row("octopus, cut-out", QStringLiteral("sketches/quickdraw_octopus_4512633778601984.json"),
+        SkinningMode::CutOut);
+    row("parrot, cut-out", QStringLiteral("review/sketches/quickdraw_parrot_5460481487667200.json"),
+        SkinningMode::CutOut);
+    row("bear, cut-out", QStringLiteral("review/sketches/quickdraw_bear_6552723749076992.json"),
+        SkinningMode::CutOut);
+    row("angel, cut-out", QStringLiteral("sketches/quickdraw_angel_5575041318125568.json"),
+        SkinningMode::CutOut);
+    row("parrot, rigid", QStringLiteral("review/sketches/quickdraw_parrot_5460481487667200.json"),
+        SkinningMode::Rigid);
+    row("bird, linear blend", ours("quickdraw_bird_5635633911431168.json"),
+        SkinningMode::LinearBlend);
+    row("kangaroo, cut-out", ours("quickdraw_kangaroo_6173000183316480.json"),
+        SkinningMode::CutOut);
+    row("flamingo, rigid", ours("quickdraw_flamingo_6406751433785344.json"), SkinningMode::Rigid);
+    row("hedgehog, cut-out", ours("quickdraw_hedgehog_5292410760331264.json"),
+        SkinningMode::CutOut);
     // The wedge along its open mouth keeps its colour, but the seam meets a cut-out closer a
     // little below the line's end: a notch of 0.8 % of the filled area stays empty.
-    QTest::newRow("mouse, cut-out")
-        << QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/quickdraw_mouse_5524323760603136.json")
-        << int(SkinningMode::CutOut) << false;
+    row("mouse, cut-out", ours("quickdraw_mouse_5524323760603136.json"), SkinningMode::CutOut,
+        false);
 }
 
 void TestPoseBake::realDrawingsKeepTheirColours()
