@@ -1,5 +1,6 @@
 // Between Drawings, numerical core (issue 50): fitting drawing A onto drawing B as rigidly as
 // possible, and as-rigid-as-possible interpolation of the fitted pair.
+#include "../../deform/src/between/point_grid.h"
 #include "between_fixtures.h"
 #include "grid_mesh.h"
 
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -116,6 +118,7 @@ private slots:
     void interpolationEndsAreExact();
     void turnedLimbKeepsItsLength();
     void curledLimbTurnsOneWay();
+    void pointGridAnswersAsASearchOfEveryPoint();
 };
 
 void TestBetweenFit::rigidMotionIsRecovered_data()
@@ -458,6 +461,59 @@ void TestBetweenFit::curledLimbTurnsOneWay()
                                 .arg(t)
                                 .arg(got * 180.0 / std::numbers::pi)
                                 .arg(expected * 180.0 / std::numbers::pi)));
+    }
+}
+
+// The fit's nearest-point grid answers exactly as looking at every point would (the same row,
+// ties to the lower, the same distance), for points along curves as drawings have them, with and
+// without the normal filter, from inside and far outside the grid, and with no normals.
+void TestBetweenFit::pointGridAnswersAsASearchOfEveryPoint()
+{
+    std::mt19937 rng(20261207u);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int round = 0; round < 6; ++round) {
+        // Points along a few wavy lines, some repeated (ties), as a drawing's samples lie.
+        const int k = 200 + 300 * round;
+        Eigen::MatrixX2d P(k, 2), N(k, 2);
+        for (int i = 0; i < k; ++i) {
+            const double t = unit(rng) * 6.0, line = double(i % 5);
+            P.row(i) << 40.0 * t + 3.0 * line, 60.0 * line + 20.0 * std::sin(t * (1.0 + line));
+            if (i % 17 == 3 && i > 0)
+                P.row(i) = P.row(i - 1); // a point drawn twice
+            const double a = unit(rng) * 2.0 * std::numbers::pi;
+            N.row(i) << std::cos(a), std::sin(a);
+        }
+        const detail::PointGrid grid(P, N), plain(P, Eigen::MatrixX2d());
+        const Eigen::Vector2d lo = P.colwise().minCoeff(), hi = P.colwise().maxCoeff();
+        for (int query = 0; query < 400; ++query) {
+            // Inside the box, then up to twice its size away from it.
+            const double reach = query < 300 ? 1.0 : 5.0;
+            const Eigen::Vector2d q(
+                lo.x() + (unit(rng) * reach - (reach - 1.0) / 2.0) * (hi.x() - lo.x()),
+                lo.y() + (unit(rng) * reach - (reach - 1.0) / 2.0) * (hi.y() - lo.y()));
+            const double a = unit(rng) * 2.0 * std::numbers::pi;
+            const Eigen::Vector2d normal(std::cos(a), std::sin(a));
+            for (const double agreement : {0.0, 0.5, 0.95}) {
+                int expected = -1;
+                double expectedSquared = std::numeric_limits<double>::infinity();
+                for (int i = 0; i < k; ++i) {
+                    if (agreement > 0.0 && std::abs(N.row(i).dot(normal)) < agreement)
+                        continue;
+                    const double d = (P.row(i).transpose() - q).squaredNorm();
+                    if (d < expectedSquared) { // the lower row on a tie
+                        expectedSquared = d;
+                        expected = i;
+                    }
+                }
+                double distance = -1.0;
+                QCOMPARE(grid.nearest(q, normal, agreement, distance), expected);
+                QCOMPARE(distance, std::sqrt(expectedSquared));
+                if (agreement == 0.0) {
+                    QCOMPARE(plain.nearest(q, normal, 0.9, distance), expected);
+                    QCOMPARE(distance, std::sqrt(expectedSquared));
+                }
+            }
+        }
     }
 }
 

@@ -8,8 +8,7 @@ namespace finbook::deform::between::detail {
 
 PointGrid::PointGrid(const Eigen::MatrixX2d &P, const Eigen::MatrixX2d &N)
     : m_count(int(P.rows()))
-    , m_P(P)
-    , m_N(N)
+    , m_normals(N.rows() == P.rows())
 {
     if (m_count == 0)
         return;
@@ -36,10 +35,11 @@ PointGrid::PointGrid(const Eigen::MatrixX2d &P, const Eigen::MatrixX2d &N)
     }
     for (std::size_t c = 1; c < m_start.size(); ++c)
         m_start[c] += m_start[c - 1];
-    m_points.resize(std::size_t(m_count));
+    m_packed.resize(std::size_t(m_count));
     std::vector<int> fill(m_start.begin(), m_start.end() - 1);
     for (int i = 0; i < m_count; ++i)
-        m_points[std::size_t(fill[std::size_t(cellOf[std::size_t(i)])]++)] = i;
+        m_packed[std::size_t(fill[std::size_t(cellOf[std::size_t(i)])]++)] = {
+            P(i, 0), P(i, 1), m_normals ? N(i, 0) : 0.0, m_normals ? N(i, 1) : 0.0, i};
 }
 
 template <class Fn> void PointGrid::visitRing(int cx, int cy, int ring, Fn &&fn) const
@@ -49,7 +49,7 @@ template <class Fn> void PointGrid::visitRing(int cx, int cy, int ring, Fn &&fn)
             return;
         const std::size_t c = std::size_t(y) * std::size_t(m_nx) + std::size_t(x);
         for (int k = m_start[c]; k < m_start[c + 1]; ++k)
-            fn(m_points[std::size_t(k)]);
+            fn(m_packed[std::size_t(k)]);
     };
     if (ring == 0) {
         cellAt(cx, cy);
@@ -71,29 +71,35 @@ int PointGrid::nearest(const Eigen::Vector2d &q, const Eigen::Vector2d &normal, 
     distance = std::numeric_limits<double>::infinity();
     if (m_count == 0 || !q.allFinite())
         return -1;
-    const bool filter = minAgreement > 0.0 && m_N.rows() == m_count && normal.squaredNorm() > 0.0;
+    const bool filter = minAgreement > 0.0 && m_normals && normal.squaredNorm() > 0.0;
     const double fx = (q.x() - m_origin.x()) / m_cell, fy = (q.y() - m_origin.y()) / m_cell;
     // Queries far outside the grid start from the nearest cell; rings grow from there.
     const int cx = int(std::clamp(std::floor(fx), -1.0, double(m_nx)));
     const int cy = int(std::clamp(std::floor(fy), -1.0, double(m_ny)));
     const double outside =
         std::hypot(std::max({0.0, -fx, fx - m_nx}), std::max({0.0, -fy, fy - m_ny})) * m_cell;
+    // Inside the grid q lies in the centre cell, this far (cells) from its nearest side.
+    const double margin =
+        outside > 0.0 ? 0.0
+                      : std::max(0.0, std::min({fx - cx, cx + 1.0 - fx, fy - cy, cy + 1.0 - fy}));
     int best = -1;
     double bestSquared = std::numeric_limits<double>::infinity();
     const int maxRing = std::max(m_nx, m_ny) + 2;
     for (int ring = 0; ring <= maxRing; ++ring) {
-        // Every point in ring r is at least r − 1 cells from q (q lies in the centre cell, or
-        // beyond it when outside the grid), and every point at least as far as the grid is.
-        const double bound = std::max(std::max(0.0, double(ring - 1)) * m_cell, outside);
+        // Every point in ring r ≥ 1 is at least r − 1 cells and the margin from q (beyond it
+        // when q is outside the grid), and every point at least as far as the grid is.
+        const double bound =
+            std::max(ring == 0 ? 0.0 : (double(ring - 1) + margin) * m_cell, outside);
         if (best >= 0 && bound * bound > bestSquared)
             break;
-        visitRing(cx, cy, ring, [&](int i) {
-            if (filter && std::abs(m_N(i, 0) * normal.x() + m_N(i, 1) * normal.y()) < minAgreement)
+        visitRing(cx, cy, ring, [&](const Packed &p) {
+            if (filter && std::abs(p.nx * normal.x() + p.ny * normal.y()) < minAgreement)
                 return;
-            const double d = (m_P.row(i).transpose() - q).squaredNorm();
-            if (d < bestSquared || (d == bestSquared && i < best)) {
+            const double dx = p.x - q.x(), dy = p.y - q.y();
+            const double d = dx * dx + dy * dy;
+            if (d < bestSquared || (d == bestSquared && p.row < best)) {
                 bestSquared = d;
-                best = i;
+                best = p.row;
             }
         });
     }

@@ -28,13 +28,20 @@ public:
 private:
     template <class Fn> void visitRing(int cx, int cy, int ring, Fn &&fn) const;
 
+    // A point as the queries read it, stored cell by cell (m_start): its place,
+    // its normal (zero when there are none) and its row.
+    struct Packed {
+        double x, y, nx, ny;
+        int row;
+    };
+
     int m_count = 0;
-    Eigen::MatrixX2d m_P, m_N;
+    bool m_normals = false;
+    std::vector<Packed> m_packed;
     Eigen::Vector2d m_origin = Eigen::Vector2d::Zero();
     double m_cell = 1.0;
     int m_nx = 1, m_ny = 1;
-    std::vector<int> m_start; // CSR: points of cell c are m_points[m_start[c] … m_start[c+1])
-    std::vector<int> m_points;
+    std::vector<int> m_start; // CSR: points of cell c are m_packed[m_start[c] … m_start[c+1])
 };
 
 } // namespace finbook::deform::between::detail
