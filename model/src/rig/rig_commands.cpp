@@ -187,11 +187,12 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
             consider(way, seams.bakedAgreement);
             for (const std::vector<Stroke> *set :
                  {&seams.seams, &seams.seamsOffInk, &seams.seamsAcrossInk}) {
-                if (set->empty())
+                if (set->empty() || best.whole()) // nothing later could be better
                     continue;
                 std::vector<Stroke> with = way;
                 with.insert(with.end(), set->begin(), set->end());
-                for (int keep = 0; keep < (seams.keptClosures.empty() ? 1 : 2); ++keep) {
+                for (int keep = 0; keep < (seams.keptClosures.empty() ? 1 : 2) && !best.whole();
+                     ++keep) {
                     if (keep)
                         with.insert(with.end(), seams.keptClosures.begin(),
                                     seams.keptClosures.end());
