@@ -416,12 +416,6 @@ std::vector<Fill> fillsAfterBake(const ShownPose &pose, const std::vector<Stroke
     return out;
 }
 
-bool FillAgreement::whole() const
-{
-    constexpr double kWhole = 1.0 - 1e-9;
-    return seen >= kWhole && underLinesToo >= kWhole;
-}
-
 FillAgreement shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                  double closeGap)
 {

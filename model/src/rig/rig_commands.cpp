@@ -7,6 +7,7 @@
 #include <finbook/model/rig/rig_commands.h>
 
 #include <algorithm>
+#include <ranges>
 
 namespace finbook::model {
 
@@ -176,8 +177,8 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
             chosen = lines;
         }
     };
-    for (const auto &[bare, i] : order) {
-        if (best.seen >= kKeptEnough && best.underLinesToo >= kKeptEnough)
+    for (const std::size_t i : order | std::views::values) {
+        if (best.atLeast(kKeptEnough))
             break;
         const std::vector<Stroke> &way = ways[i];
         for (const double widerThanPen : {kSeamWiderThanPen, 1.0}) {

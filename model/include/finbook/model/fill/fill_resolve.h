@@ -93,7 +93,8 @@ struct FillAgreement {
     double seen = 1.0;
     double underLinesToo = 1.0;
     auto operator<=>(const FillAgreement &) const = default;
-    bool whole() const; // Apply Pose keeps every colour
+    bool atLeast(double share) const { return seen >= share && underLinesToo >= share; }
+    bool whole() const { return atLeast(1.0 - 1e-9); } // Apply Pose keeps every colour
 };
 FillAgreement shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                  double closeGap);
