@@ -7,7 +7,6 @@
 #include <finbook/model/rig/rig_commands.h>
 
 #include <algorithm>
-#include <ranges>
 
 namespace finbook::model {
 
@@ -177,10 +176,10 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
             chosen = lines;
         }
     };
-    for (const std::size_t i : order | std::views::values) {
+    for (const auto &taken : order) {
         if (best.atLeast(kKeptEnough))
             break;
-        const std::vector<Stroke> &way = ways[i];
+        const std::vector<Stroke> &way = ways[taken.second];
         for (const double widerThanPen : {kSeamWiderThanPen, 1.0}) {
             if (best.whole())
                 break;
