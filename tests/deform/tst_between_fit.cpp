@@ -465,8 +465,9 @@ void TestBetweenFit::curledLimbTurnsOneWay()
 }
 
 // The fit's nearest-point grid answers exactly as looking at every point would (the same row,
-// ties to the lower, the same distance), for points along curves as drawings have them, with and
-// without the normal filter, from inside and far outside the grid, and with no normals.
+// ties to the lower, the same distance), for points along curves as drawings have them (sparse
+// ones on the coarse cells, dense ones on the fine cells too), with and without the normal
+// filter, from inside and far outside the grid, with no normals, and bounded by a reach.
 void TestBetweenFit::pointGridAnswersAsASearchOfEveryPoint()
 {
     std::mt19937 rng(20261207u);
@@ -512,6 +513,13 @@ void TestBetweenFit::pointGridAnswersAsASearchOfEveryPoint()
                     QCOMPARE(plain.nearest(q, normal, 0.9, distance), expected);
                     QCOMPARE(distance, std::sqrt(expectedSquared));
                 }
+                // A bounded search: the same point when it lies within reach, none beyond.
+                const double within = unit(rng) * 2.0 * std::sqrt(expectedSquared);
+                const bool reached = expected >= 0 && std::sqrt(expectedSquared) <= within;
+                QCOMPARE(grid.nearest(q, normal, agreement, distance, within),
+                         reached ? expected : -1);
+                QCOMPARE(distance, reached ? std::sqrt(expectedSquared)
+                                           : std::numeric_limits<double>::infinity());
             }
         }
     }

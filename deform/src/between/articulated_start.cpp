@@ -139,7 +139,7 @@ Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTa
                         current.linear * source.N.row(own[std::size_t(i)]).transpose();
                     n = n.norm() > 0.0 ? Eigen::Vector2d(n.normalized()) : Eigen::Vector2d::Zero();
                     double d = 0.0;
-                    const int row = target.grid.nearest(x, n, options.normalAgreement, d);
+                    const int row = target.grid.nearest(x, n, options.normalAgreement, d, cap);
                     from.row(i) = rest.row(i);
                     to.row(i) = row >= 0 ? Eigen::RowVector2d(target.P.row(row)) : from.row(i);
                     w(i) = row >= 0 && d <= cap ? 1.0 : 0.0;
@@ -198,7 +198,7 @@ Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTa
                 const double length = n.norm();
                 n = length > 0.0 ? Eigen::Vector2d(n / length) : Eigen::Vector2d::Zero();
                 double d = 0.0;
-                const int row = target.grid.nearest(x, n, options.normalAgreement, d);
+                const int row = target.grid.nearest(x, n, options.normalAgreement, d, cap);
                 sum += row < 0 ? cap : std::min(d, cap);
             }
             return sum;
