@@ -232,7 +232,9 @@ void TestBetweenDrawings::reversedAndShuffledLinesGiveTheSameFit()
     for (std::size_t k = 0; k < points.size(); ++k)
         worst = std::max(worst, QLineF(fitted(**inOrder, 0, k), fitted(**shuffled, 0, k)).length());
     qInfo("in order against shuffled: %.3f px apart at most", worst);
-    QVERIFY2(worst < 1.0, qPrintable(QString::number(worst)));
+    // B's points are thinned square by square, not along each line, so the fit sees the same
+    // points however B was drawn: the same fit, not a close one.
+    QVERIFY2(worst < 1e-9, qPrintable(QString::number(worst)));
 }
 
 void TestBetweenDrawings::correspondencePinsMoveTheFit()

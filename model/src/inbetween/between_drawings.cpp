@@ -8,7 +8,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
 #include <optional>
+#include <tuple>
 
 namespace finbook::model {
 
@@ -43,6 +47,12 @@ Eigen::Vector2d normalAt(const std::vector<StrokePoint> &points, std::size_t k)
 // it, more samples cost time and add nothing the mesh can follow.
 constexpr std::size_t kMaxSamples = 2000;
 constexpr std::size_t kMaxTargetPoints = 6000;
+// ... and none closer along its stroke than this (px) to the last one taken: a traced
+// outline's points 0.8 px apart pulled no better than every other one, and each costs a
+// nearest-point query per iteration. B's points, one per square of kTargetSpacing, are a little
+// denser than A's samples, so that every sample finds one of B's within the spacing.
+constexpr double kSampleSpacing = 2.0;
+constexpr double kTargetSpacing = 1.5;
 
 // Affine coordinates of p in triangle (a, b, c), unclamped; nullopt for a triangle of no area.
 std::optional<Eigen::RowVector3d> affineCoords(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
@@ -229,9 +239,13 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
         if (!inked(A.strokes[s]))
             continue;
         const std::vector<StrokePoint> &points = A.strokes[s].data->points;
+        double since = std::numeric_limits<double>::infinity();
         for (std::size_t k = 0; k < points.size(); ++k, ++counted) {
-            if (counted % stride != 0)
+            if (k > 0)
+                since += std::hypot(points[k].x - points[k - 1].x, points[k].y - points[k - 1].y);
+            if (counted % stride != 0 || since < kSampleSpacing)
                 continue;
+            since = 0.0;
             const Eigen::Index row = Eigen::Index(fit->meshed->strokeOffsets[s] + k);
             const Eigen::Vector2d n = normalAt(points, k);
             if (row >= all.I.size() || all.I(row) < 0 || n.isZero())
@@ -258,25 +272,46 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
                                        .arg(QString::fromStdString(source.error().message)));
     fit->source = *source;
 
-    // B's points: every inked stroke point (at most kMaxTargetPoints, evenly) with its normal.
+    // B's points: every inked stroke point (at most kMaxTargetPoints, evenly) with its normal,
+    // thinned to one in each kTargetSpacing square — the one nearest its middle, whatever order
+    // and direction B's lines were drawn in — and taken square by square.
     std::size_t bPoints = 0;
     for (const Stroke &s : B.strokes)
         bPoints += inked(s) ? s.data->points.size() : 0;
     const std::size_t bStride =
         std::max<std::size_t>(1, (bPoints + kMaxTargetPoints - 1) / kMaxTargetPoints);
-    std::vector<Eigen::Vector2d> targetPoints, targetNormals;
+    struct Kept {
+        Eigen::Vector2d point, normal;
+        double off = 0.0;
+        auto order() const { return std::tuple(off, point.x(), point.y(), normal.x(), normal.y()); }
+    };
+    std::map<std::pair<std::int64_t, std::int64_t>, Kept> squares;
     counted = 0;
     for (const Stroke &s : B.strokes) {
         if (!inked(s))
             continue;
         const std::vector<StrokePoint> &points = s.data->points;
         for (std::size_t k = 0; k < points.size(); ++k, ++counted) {
-            const Eigen::Vector2d n = normalAt(points, k);
+            Eigen::Vector2d n = normalAt(points, k);
             if (counted % bStride != 0 || n.isZero())
                 continue;
-            targetPoints.emplace_back(points[k].x, points[k].y);
-            targetNormals.push_back(n);
+            if (n.x() < 0.0 || (n.x() == 0.0 && n.y() < 0.0)) // either way along the line
+                n = -n;
+            const Eigen::Vector2d p(points[k].x, points[k].y);
+            const double sx = std::floor(p.x() / kTargetSpacing),
+                         sy = std::floor(p.y() / kTargetSpacing);
+            const Kept kept{
+                p, n, (p - kTargetSpacing * Eigen::Vector2d(sx + 0.5, sy + 0.5)).squaredNorm()};
+            const auto [at, fresh] =
+                squares.try_emplace({std::int64_t(sy), std::int64_t(sx)}, kept);
+            if (!fresh && kept.order() < at->second.order())
+                at->second = kept;
         }
+    }
+    std::vector<Eigen::Vector2d> targetPoints, targetNormals;
+    for (const auto &[square, kept] : squares) {
+        targetPoints.push_back(kept.point);
+        targetNormals.push_back(kept.normal);
     }
     Eigen::MatrixX2d P(Eigen::Index(targetPoints.size()), 2), NB(P.rows(), 2);
     for (std::size_t i = 0; i < targetPoints.size(); ++i) {
