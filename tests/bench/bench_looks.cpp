@@ -122,6 +122,20 @@ std::vector<float> distanceTo(const std::vector<bool> &mask, int w, int h)
     return d;
 }
 
+// `path` (non-zero rule) through `t` on a kSide square: white inside, black outside.
+QImage pathMask(QPainterPath path, const QTransform &t)
+{
+    QImage mask(kSide, kSide, QImage::Format_Grayscale8);
+    mask.fill(0);
+    QPainter painter(&mask);
+    painter.setTransform(t);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(Qt::white);
+    path.setFillRule(Qt::WindingFill);
+    painter.drawPath(path);
+    return mask;
+}
+
 double segmentDistance(QPointF p, QPointF a, QPointF b)
 {
     const QPointF ab = b - a;
@@ -411,17 +425,7 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
                 return fx < 0 || fy < 0 || fx >= w || fy >= h ? std::size_t(-1) : index(fx, fy);
             };
             for (std::size_t k = 0; k < outlines.size(); ++k) {
-                QImage mask(w, h, QImage::Format_Grayscale8);
-                mask.fill(0);
-                {
-                    QPainter painter(&mask);
-                    painter.setTransform(t);
-                    painter.setPen(Qt::NoPen);
-                    painter.setBrush(Qt::white);
-                    QPainterPath path = outlines[k];
-                    path.setFillRule(Qt::WindingFill);
-                    painter.drawPath(path);
-                }
+                const QImage mask = pathMask(outlines[k], t);
                 const bool rigid = k < layers.motions.size() && layers.motions[k].has_value();
                 const QTransform back =
                     rigid ? inverse * layers.motions[k]->inverted() * t : QTransform();
@@ -466,19 +470,13 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
                     else
                         ideal[i] = Background;
                 }
-            // The sockets: round ends in the limb's fill, where lines may run straight across.
+            // The sockets: round ends in the limb's fill (filled, and a line may run round
+            // their edge).
             std::vector<bool> inSocket(shown.size(), false);
             for (const QPainterPath &socket : layers.sockets) {
                 if (socket.isEmpty())
                     continue;
-                QImage mask(w, h, QImage::Format_Grayscale8);
-                mask.fill(0);
-                QPainter painter(&mask);
-                painter.setTransform(t);
-                painter.setPen(Qt::NoPen);
-                painter.setBrush(Qt::white);
-                painter.drawPath(socket);
-                painter.end();
+                const QImage mask = pathMask(socket, t);
                 for (int y = 0; y < h; ++y) {
                     const uchar *row = mask.constScanLine(y);
                     for (int x = 0; x < w; ++x)
