@@ -211,6 +211,35 @@ void print(const QJsonObject &row)
     std::fflush(stdout);
 }
 
+// Each pixel's nearest bone (by its child joint; −1 for the background) in a view.
+std::vector<int> nearestBones(const std::vector<Class> &restClass, const QTransform &t,
+                              const SkeletonRig &skeleton)
+{
+    std::vector<QPointF> joints;
+    for (const QPointF &p : skeleton.joints)
+        joints.push_back(t.map(p));
+    std::vector<int> out(restClass.size(), -1);
+    for (int y = 0; y < kSide; ++y)
+        for (int x = 0; x < kSide; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(kSide) + std::size_t(x);
+            if (restClass[i] == Background)
+                continue;
+            double best = std::numeric_limits<double>::infinity();
+            for (int k = 0; k < skeleton.jointCount(); ++k) {
+                const int p = skeleton.parent[std::size_t(k)];
+                if (p < 0)
+                    continue;
+                const double d = segmentDistance(QPointF(x + 0.5, y + 0.5), joints[std::size_t(p)],
+                                                 joints[std::size_t(k)]);
+                if (d < best) {
+                    best = d;
+                    out[i] = k;
+                }
+            }
+        }
+    return out;
+}
+
 // The limbs bake turns: joints whose parent is a limb base (without any, the root's children).
 std::vector<int> limbJoints(const SkeletonRig &s)
 {
@@ -264,7 +293,7 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
 
     // Per limb, the view: a square around its pivot that holds the limb in every turn (a turn
     // keeps each point's distance from the pivot), the pen at least 2 px where it can be; and
-    // the rest picture in it, each pixel's nearest bone (by its child joint) with it.
+    // the rest picture in it.
     const SkeletonRig &skeleton = rig.skeleton;
     const int w = kSide, h = kSide;
     const auto index = [w](int x, int y) {
@@ -277,7 +306,7 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
         QTransform t;
         double scale = 1.0;
         std::vector<Class> restClass;
-        std::vector<int> nearestBone;
+        std::vector<int> nearestBone; // made when a turn first needs it
     };
     std::vector<View> views;
     for (const int j : limbs) {
@@ -294,27 +323,6 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
             QRectF(pivot - QPointF(reach, reach), QSizeF(2.0 * reach, 2.0 * reach)), kSide);
         view.scale = std::sqrt(std::abs(view.t.determinant()));
         view.restClass = classes(testing::framePicture(doc, 0, view.t, kSide));
-        std::vector<QPointF> joints;
-        for (const QPointF &p : skeleton.joints)
-            joints.push_back(view.t.map(p));
-        view.nearestBone.assign(view.restClass.size(), -1);
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                if (view.restClass[index(x, y)] == Background)
-                    continue;
-                double best = std::numeric_limits<double>::infinity();
-                for (int k = 0; k < skeleton.jointCount(); ++k) {
-                    const int p = skeleton.parent[std::size_t(k)];
-                    if (p < 0)
-                        continue;
-                    const double d = segmentDistance(
-                        QPointF(x + 0.5, y + 0.5), joints[std::size_t(p)], joints[std::size_t(k)]);
-                    if (d < best) {
-                        best = d;
-                        view.nearestBone[index(x, y)] = k;
-                    }
-                }
-            }
         views.push_back(std::move(view));
     }
 
@@ -339,7 +347,6 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
         const QTransform &t = views[l].t;
         const double scale = views[l].scale;
         const std::vector<Class> &restClass = views[l].restClass;
-        const std::vector<int> &nearestBone = views[l].nearestBone;
         const double pen = testing::kDrawingPenWidth * scale;
         const double tol = std::max(2.0, pen);
         const double area = std::max(6.0, pen * pen); // a pen-width square
@@ -460,6 +467,9 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
                     // A piece that did not move rigidly: the paper limb cut where the bones
                     // meet, over the body.
                     turn.cut = false;
+                    if (views[l].nearestBone.empty())
+                        views[l].nearestBone = nearestBones(restClass, t, skeleton);
+                    const std::vector<int> &nearestBone = views[l].nearestBone;
                     const QPointF q(x + 0.5, y + 0.5);
                     const std::size_t r = restAt(t.map(limbMotion.unmap(inverse.map(q))));
                     if (r != std::size_t(-1) && restClass[r] != Background &&

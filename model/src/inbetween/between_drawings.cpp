@@ -245,11 +245,11 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
                 since += std::hypot(points[k].x - points[k - 1].x, points[k].y - points[k - 1].y);
             if (counted % stride != 0 || since < kSampleSpacing)
                 continue;
-            since = 0.0;
             const Eigen::Index row = Eigen::Index(fit->meshed->strokeOffsets[s] + k);
             const Eigen::Vector2d n = normalAt(points, k);
             if (row >= all.I.size() || all.I(row) < 0 || n.isZero())
                 continue;
+            since = 0.0;
             rows.push_back(row);
             normals.push_back(n);
         }
@@ -272,28 +272,23 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
                                        .arg(QString::fromStdString(source.error().message)));
     fit->source = *source;
 
-    // B's points: every inked stroke point (at most kMaxTargetPoints, evenly) with its normal,
-    // thinned to one in each kTargetSpacing square — the one nearest its middle, whatever order
-    // and direction B's lines were drawn in — and taken square by square.
-    std::size_t bPoints = 0;
-    for (const Stroke &s : B.strokes)
-        bPoints += inked(s) ? s.data->points.size() : 0;
-    const std::size_t bStride =
-        std::max<std::size_t>(1, (bPoints + kMaxTargetPoints - 1) / kMaxTargetPoints);
+    // B's points: every inked stroke point with its normal, thinned to one in each
+    // kTargetSpacing square — the one nearest its middle — and taken square by square (at most
+    // kMaxTargetPoints, evenly), so that neither the order nor the direction B's lines were
+    // drawn in changes them.
     struct Kept {
         Eigen::Vector2d point, normal;
         double off = 0.0;
         auto order() const { return std::tuple(off, point.x(), point.y(), normal.x(), normal.y()); }
     };
     std::map<std::pair<std::int64_t, std::int64_t>, Kept> squares;
-    counted = 0;
     for (const Stroke &s : B.strokes) {
         if (!inked(s))
             continue;
         const std::vector<StrokePoint> &points = s.data->points;
-        for (std::size_t k = 0; k < points.size(); ++k, ++counted) {
+        for (std::size_t k = 0; k < points.size(); ++k) {
             Eigen::Vector2d n = normalAt(points, k);
-            if (counted % bStride != 0 || n.isZero())
+            if (n.isZero())
                 continue;
             if (n.x() < 0.0 || (n.x() == 0.0 && n.y() < 0.0)) // either way along the line
                 n = -n;
@@ -308,15 +303,16 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
                 at->second = kept;
         }
     }
-    std::vector<Eigen::Vector2d> targetPoints, targetNormals;
+    const std::size_t bStride =
+        std::max<std::size_t>(1, (squares.size() + kMaxTargetPoints - 1) / kMaxTargetPoints);
+    Eigen::MatrixX2d P(Eigen::Index((squares.size() + bStride - 1) / bStride), 2), NB(P.rows(), 2);
+    Eigen::Index taken = 0;
+    counted = 0;
     for (const auto &[square, kept] : squares) {
-        targetPoints.push_back(kept.point);
-        targetNormals.push_back(kept.normal);
-    }
-    Eigen::MatrixX2d P(Eigen::Index(targetPoints.size()), 2), NB(P.rows(), 2);
-    for (std::size_t i = 0; i < targetPoints.size(); ++i) {
-        P.row(Eigen::Index(i)) = targetPoints[i].transpose();
-        NB.row(Eigen::Index(i)) = targetNormals[i].transpose();
+        if (counted++ % bStride != 0)
+            continue;
+        P.row(taken) = kept.point.transpose();
+        NB.row(taken++) = kept.normal.transpose();
     }
     fit->target = between::rigidFitTarget(P, NB);
 
