@@ -306,6 +306,7 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
         QTransform t;
         double scale = 1.0;
         std::vector<Class> restClass;
+        QImage restPicture;
         std::vector<int> nearestBone; // made when a turn first needs it
     };
     std::vector<View> views;
@@ -322,7 +323,8 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
         view.t = testing::pictureView(
             QRectF(pivot - QPointF(reach, reach), QSizeF(2.0 * reach, 2.0 * reach)), kSide);
         view.scale = std::sqrt(std::abs(view.t.determinant()));
-        view.restClass = classes(testing::framePicture(doc, 0, view.t, kSide));
+        view.restPicture = testing::framePicture(doc, 0, view.t, kSide);
+        view.restClass = classes(view.restPicture);
         views.push_back(std::move(view));
     }
 
@@ -425,6 +427,9 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
             }
             turn.cut = !layers.pieces.empty();
             std::vector<Class> ideal(shown.size(), Background);
+            // Per pixel, the rest pixel that its fill (idealFrom) or its line (inkFrom) shows.
+            std::vector<std::size_t> idealFrom(shown.size(), std::size_t(-1)),
+                inkFrom(shown.size(), std::size_t(-1));
             std::vector<bool> allowed(shown.size(), false);
             std::vector<int> pieceAt(shown.size(), -1); // the topmost layer over each pixel
             const auto restAt = [&](QPointF from) {
@@ -447,14 +452,18 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
                             allowed[i] = true;
                             // The layer's fills: the rest fill moved with it, over the layers
                             // below (where it has none they show through).
-                            if (r != std::size_t(-1) && restClass[r] == Fill)
+                            if (r != std::size_t(-1) && restClass[r] == Fill) {
                                 ideal[i] = Fill;
+                                idealFrom[i] = r;
+                            }
                         }
                         // Its lines, wherever they reach.
                         if (r != std::size_t(-1) &&
                             restInk[k].constScanLine(int(r / std::size_t(w)))[r % std::size_t(w)] >
-                                145)
+                                145) {
                             ideal[i] = Ink;
+                            inkFrom[i] = r;
+                        }
                     }
                 }
             }
@@ -480,6 +489,68 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
                     else
                         ideal[i] = Background;
                 }
+            // A piece's line that the pose laid inside one colour (an arm of the body's colour
+            // turned in over it): the paper shows that colour all round it, and at rest the
+            // colour lay on one side of it only. Where the pieces are of one colour the eye sees
+            // one shape, with no line there (and no stub where it would end at the joint).
+            {
+                const QRgb *restPixels =
+                    reinterpret_cast<const QRgb *>(views[l].restPicture.constBits());
+                const auto sameColour = [](QRgb a, QRgb b) {
+                    return std::abs(qRed(a) - qRed(b)) <= 24 &&
+                           std::abs(qGreen(a) - qGreen(b)) <= 24 &&
+                           std::abs(qBlue(a) - qBlue(b)) <= 24;
+                };
+                const double rho = pen + 1.5; // past the line from any of its pixels
+                constexpr int kRing = 12;
+                std::vector<std::size_t> merged;
+                for (int y = 0; y < h; ++y)
+                    for (int x = 0; x < w; ++x) {
+                        const std::size_t i = index(x, y);
+                        if (ideal[i] != Ink || inkFrom[i] == std::size_t(-1))
+                            continue;
+                        // Round it as the paper shows it: one fill colour everywhere not ink.
+                        std::optional<QRgb> colour;
+                        int seen = 0;
+                        bool one = true;
+                        for (int k = 0; k < kRing && one; ++k) {
+                            const double a = 2.0 * std::numbers::pi * k / kRing;
+                            const std::size_t q = restAt(
+                                QPointF(x + 0.5 + rho * std::cos(a), y + 0.5 + rho * std::sin(a)));
+                            if (q == std::size_t(-1) || ideal[q] == Background) {
+                                one = false;
+                            } else if (ideal[q] == Fill && idealFrom[q] != std::size_t(-1)) {
+                                const QRgb c = restPixels[idealFrom[q]];
+                                one = !colour || sameColour(*colour, c);
+                                colour = colour.value_or(c);
+                                ++seen;
+                            }
+                        }
+                        if (!one || seen < kRing / 2)
+                            continue;
+                        // Round it at rest: that colour on one side, something else on the other.
+                        const std::size_t r = inkFrom[i];
+                        const double rx = double(r % std::size_t(w)) + 0.5,
+                                     ry = double(r / std::size_t(w)) + 0.5;
+                        // (Two rings: a traced outline's stair steps can put one ring's
+                        // points all on ink or on one side.)
+                        bool in = false, out = false;
+                        for (int k = 0; k < 2 * kRing; ++k) {
+                            const double a = 2.0 * std::numbers::pi * k / kRing;
+                            const double far = k < kRing ? rho : 2.0 * rho;
+                            const std::size_t q =
+                                restAt(QPointF(rx + far * std::cos(a), ry + far * std::sin(a)));
+                            if (q == std::size_t(-1) || restClass[q] == Background)
+                                out = true;
+                            else if (restClass[q] == Fill)
+                                (sameColour(restPixels[q], *colour) ? in : out) = true;
+                        }
+                        if (in && out)
+                            merged.push_back(i);
+                    }
+                for (const std::size_t i : merged)
+                    ideal[i] = Fill;
+            }
             // The sockets: round ends in the limb's fill (filled, and a line may run round
             // their edge).
             std::vector<bool> inSocket(shown.size(), false);

@@ -209,6 +209,7 @@ private slots:
     void cutOutOutlineRunsRoundATurnedJoint();
     void cutOutLayersComeBackWithTheFile();
     void applyingACutOutPoseKeepsWhatItShowed();
+    void armOfTheBodysColourFoldsInWithoutALine();
     void onionGhostOfACutOutPoseIsEven();
     void cutOutTurnedLimbIsLitByTheStillLight();
     void shadedCutOutAtRestShowsTheRestShading();
@@ -1149,6 +1150,81 @@ void TestSkeletonRig::applyingACutOutPoseKeepsWhatItShowed()
     QCOMPARE(serializeFinbook(doc), before);
     doc.undoStack()->redo();
     QCOMPARE(doc.group(g)->strokes, baked.strokes);
+}
+
+void TestSkeletonRig::armOfTheBodysColourFoldsInWithoutALine()
+{
+    // The arm, of the body's one fill, turned 100° down over the body. At rest no line parted
+    // the arm from the body; turned in, its edge that lies over the body has the yellow on
+    // both sides, and drawn it was a stub ending at the joint. The pose shows the arm and body
+    // as one yellow shape there (line_runs.h, MergedLines), its edge still drawn where it
+    // lies over the paper, and Apply Pose keeps what it showed: the edge kept unseen, so the
+    // line stays whole.
+    TurnedArm scene;
+    QVERIFY(scene.turn(100.0));
+    Document &doc = scene.doc;
+    const Id g = scene.g;
+    const DocumentSettings &settings = doc.settings();
+    const QPointF pivot = doc.group(g)->rig.skeleton.joints[std::size_t(scene.base)];
+    const StrokeGroup &posed = *doc.group(g);
+    const std::vector<StrokePoint> &points = posed.deformed->strokes[0];
+    const std::vector<std::int16_t> &piece = posed.deformed->pieceOf[0];
+    QCOMPARE(piece.size(), points.size());
+    // The arm's outline, turned: over the body, clear of its edges and the joint, and over
+    // the paper, clear of the body.
+    const QRectF body(100, 100, 200, 200);
+    std::vector<QPoint> over, beside;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const QPointF p(points[i].x, points[i].y);
+        if (piece[i] < 0 || QLineF(p, pivot).length() < 12.0)
+            continue;
+        if (body.adjusted(8, 8, -8, -8).contains(p))
+            over.push_back(p.toPoint());
+        else if (!body.adjusted(-8, -8, 8, 8).contains(p))
+            beside.push_back(p.toPoint());
+    }
+    QVERIFY2(over.size() >= 2 && beside.size() >= 4,
+             qPrintable(QStringLiteral("%1 %2").arg(over.size()).arg(beside.size())));
+    const auto check = [&](const QImage &image) {
+        for (const QPoint &p : over)
+            if (image.pixel(p) != yellow)
+                return QStringLiteral("%1,%2 over the body: %3")
+                    .arg(p.x())
+                    .arg(p.y())
+                    .arg(QColor(image.pixel(p)).name());
+        for (const QPoint &p : beside)
+            if (qGray(image.pixel(p)) > 100)
+                return QStringLiteral("%1,%2 beside the body: %3")
+                    .arg(p.x())
+                    .arg(p.y())
+                    .arg(QColor(image.pixel(p)).name());
+        return QString();
+    };
+    const QImage shown = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    QVERIFY2(check(shown).isEmpty(), qPrintable(check(shown)));
+    // No line of the pose ends inside the yellow near the joint: every painted run's end
+    // within three arm widths of it is a stroke's own end, or on the paper's edge of yellow.
+    for (const PaintLayer &layer : paintLayers(posed, settings))
+        for (const PaintItem &item : layer.strokes)
+            for (const StrokePoint *end : {&item.points->front(), &item.points->back()}) {
+                const QPointF p(end->x, end->y);
+                if (QLineF(p, pivot).length() > 90.0)
+                    continue;
+                int yellowRound = 0;
+                for (int k = 0; k < 16; ++k) {
+                    const double a = k * std::numbers::pi / 8.0;
+                    const QPointF q = p + 6.0 * QPointF(std::cos(a), std::sin(a));
+                    yellowRound += shown.pixel(q.toPoint()) == yellow ? 1 : 0;
+                }
+                QVERIFY2(yellowRound < 12,
+                         qPrintable(QStringLiteral("a line ends at %1,%2").arg(p.x()).arg(p.y())));
+            }
+    doc.undoStack()->push(new ApplyPoseCommand(&doc, g));
+    const QImage baked = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    QVERIFY2(check(baked).isEmpty(), qPrintable(check(baked)));
+    const auto &strokes = doc.group(g)->strokes;
+    QVERIFY(std::any_of(strokes.begin(), strokes.end(),
+                        [](const Stroke &s) { return s.data->color == kHiddenLineColor; }));
 }
 
 // The SVG export of the arm turned 100° over the body draws the pieces' fills in layer order

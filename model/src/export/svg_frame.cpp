@@ -203,7 +203,7 @@ void appendCutOutPose(QByteArray &svg, const StrokeGroup &group, const DocumentS
     Id next = kPart;
     Id whole = kNoId;
     int part = 0;
-    for (const Stroke &stroke : bakedStrokes(group, layers, [&] { return next++; })) {
+    for (const Stroke &stroke : bakedStrokes(group, layers, settings, [&] { return next++; })) {
         if (!stroke.data)
             continue;
         if (stroke.id < kPart) {

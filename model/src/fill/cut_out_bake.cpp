@@ -2,6 +2,7 @@
 // piece drawn over them hides cut away, so the baked drawing, whose fills all lie under all its
 // strokes, shows what the layered pose showed.
 #include "../skeleton/nearest_bone.h"
+#include "line_runs.h"
 
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
@@ -16,13 +17,10 @@ namespace finbook::model {
 
 namespace {
 
-// Bisection steps for where a segment enters or leaves a cover: 2⁻¹⁴ of a segment a few px
-// long is far below what a pen shows.
-constexpr int kCrossingSteps = 14;
-// A hidden run shorter than this (px, and than half the pen) shows: a cover's edge that grazes a
-// line, often at a joint where the line ends, splits off a stub that the regions join to the
-// wrong line, opening the loop the line closed (a body losing its fill after Apply Pose).
-constexpr double kShortestHiddenRun = 1.0;
+using line_runs::kShortestHiddenRun;
+using line_runs::MergedLines;
+using line_runs::Run;
+using line_runs::Segment;
 
 // The fills each layer draws over the layers below it, with their bounds for a quick reject.
 class Covers {
@@ -55,22 +53,6 @@ private:
     std::vector<std::vector<Cover>> m_layers;
 };
 
-struct Segment {
-    StrokePoint a, b;
-    std::size_t layer;
-};
-
-StrokePoint lerp(const StrokePoint &a, const StrokePoint &b, double t)
-{
-    const auto mix = [t](float u, float v) { return float(u + (v - u) * t); };
-    return {mix(a.x, b.x), mix(a.y, b.y), mix(a.pressure, b.pressure)};
-}
-
-QPointF at(const StrokePoint &p)
-{
-    return {p.x, p.y};
-}
-
 // Stroke `i`'s posed line as paintLayers paints it: per segment, the layer it is drawn on
 // (the piece both ends moved with; across a cut, the arc round the joint on the piece above
 // and each end's part on its own piece, or without an arc the deeper piece).
@@ -96,101 +78,26 @@ std::vector<Segment> layeredSegments(const StrokeGroup &group, std::size_t i,
         const std::size_t above = layerOf(posed.socketAbove[seam->cut]);
         segments.push_back({points[k], seam->arc.front(), layerOf(a)});
         for (std::size_t j = 0; j + 1 < seam->arc.size(); ++j)
-            segments.push_back({seam->arc[j], seam->arc[j + 1], above});
+            segments.push_back({seam->arc[j], seam->arc[j + 1], above, true});
         segments.push_back({seam->arc.back(), points[k + 1], layerOf(b)});
     }
     return segments;
 }
 
-// A stretch of a line that shows, or that a cover hides, as a polyline of two points or more.
-struct Run {
-    std::vector<StrokePoint> points;
-    bool shows = true;
-};
-
-// `segments` cut into the runs that show and those a cover hides, in order: each run ends
-// where the next begins (the cover's edge), so together they are the whole line.
-std::vector<Run> runsOf(const std::vector<Segment> &segments, const Covers &covers)
-{
-    // Consecutive segments share their ends, so a run takes each segment's start only when it
-    // begins there (points repeated in the stroke stay as drawn).
-    std::vector<Run> runs;
-    Run run;
-    const auto end = [&] {
-        if (run.points.size() >= 2)
-            runs.push_back(std::move(run));
-        run.points.clear();
-    };
-    const auto add = [&run](const StrokePoint &p, bool shows) {
-        run.shows = shows;
-        run.points.push_back(p);
-    };
-    // Adds the part of a segment from `a` to `b`, all of one kind.
-    const auto extend = [&](const StrokePoint &a, const StrokePoint &b, bool shows) {
-        if (!run.points.empty() && run.shows != shows) {
-            const StrokePoint last = run.points.back();
-            end();
-            add(last, shows);
-        }
-        if (run.points.empty())
-            add(a, shows);
-        add(b, shows);
-    };
-    for (const Segment &s : segments) {
-        const bool aShows = !covers.hides(s.layer, at(s.a));
-        const bool bShows = !covers.hides(s.layer, at(s.b));
-        if (aShows == bShows) {
-            extend(s.a, s.b, aShows);
-            continue;
-        }
-        // One end shows: the cover's edge lies between them.
-        double shown = aShows ? 0.0 : 1.0, hidden = 1.0 - shown;
-        for (int step = 0; step < kCrossingSteps; ++step) {
-            const double mid = 0.5 * (shown + hidden);
-            (covers.hides(s.layer, at(lerp(s.a, s.b, mid))) ? hidden : shown) = mid;
-        }
-        const StrokePoint edge = lerp(s.a, s.b, shown);
-        extend(s.a, edge, aShows);
-        extend(edge, s.b, bShows);
-    }
-    end();
-    return runs;
-}
-
-// `runs` with the hidden ones shorter than `shortest` shown, and runs of one kind that follow
-// each other joined (each begins where the one before ends).
-std::vector<Run> withoutSlivers(std::vector<Run> runs, double shortest)
-{
-    for (Run &run : runs) {
-        double length = 0.0;
-        for (std::size_t k = 1; k < run.points.size() && length < shortest; ++k)
-            length += std::hypot(double(run.points[k].x - run.points[k - 1].x),
-                                 double(run.points[k].y - run.points[k - 1].y));
-        if (!run.shows && length < shortest)
-            run.shows = true;
-    }
-    std::vector<Run> joined;
-    for (Run &run : runs) {
-        if (!joined.empty() && joined.back().shows == run.shows && !run.points.empty()) {
-            std::vector<StrokePoint> &points = joined.back().points;
-            points.insert(points.end(), run.points.begin() + 1, run.points.end());
-            continue;
-        }
-        joined.push_back(std::move(run));
-    }
-    return joined;
-}
-
 } // namespace
 
 std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<PaintLayer> &layers,
-                                 const std::function<Id()> &newId, HiddenLines hidden)
+                                 const DocumentSettings &settings, const std::function<Id()> &newId,
+                                 HiddenLines hidden)
 {
     const DeformedStrokes *d = group.deformed.get();
     if (!group.isDeformed() || !d || d->pieces.empty() ||
         d->pieceOf.size() != group.strokes.size() || d->strokes.size() != group.strokes.size())
         return posedStrokes(group);
     const Covers covers(layers);
+    StrokeGroup still = group;
+    still.deformed.reset();
+    const MergedLines merged(group, layers, fillList(still, settings.closeGap));
     std::vector<Stroke> out;
     out.reserve(group.strokes.size());
     for (std::size_t i = 0; i < group.strokes.size(); ++i) {
@@ -210,9 +117,15 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<Pai
         // the line posedStrokes makes. A hidden run kept is a hidden line (kHiddenLineColor:
         // no renderer draws it, no region ends on it), so that the line stays whole and still
         // closes its loop by itself (rest_shade.h inflates the body as the whole body).
+        // Hidden: under a piece above, or laid inside one fill (MergedLines), as paintLayers
+        // leaves it out.
+        const double width = stroke.data->width;
+        const auto hides = [&](const Segment &s, QPointF p) {
+            return covers.hides(s.layer, p) || merged.hides(s.layer, p, width, s.seam);
+        };
         std::vector<Run> runs =
-            withoutSlivers(runsOf(layeredSegments(group, i, points), covers),
-                           std::min(kShortestHiddenRun, 0.5 * double(stroke.data->width)));
+            line_runs::withoutSlivers(line_runs::runsOf(layeredSegments(group, i, points), hides),
+                                      std::min(kShortestHiddenRun, 0.5 * width));
         std::erase_if(runs, [hidden](const Run &run) {
             return !run.shows &&
                    (hidden == HiddenLines::Drop ||
@@ -242,7 +155,7 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, double closeGap,
         return posedStrokes(group);
     DocumentSettings settings;
     settings.closeGap = closeGap;
-    return bakedStrokes(group, paintLayers(group, settings), newId, hidden);
+    return bakedStrokes(group, paintLayers(group, settings), settings, newId, hidden);
 }
 
 namespace {

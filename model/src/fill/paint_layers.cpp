@@ -1,5 +1,7 @@
 // An object's layers as the renderers paint them (fill_render.h, paintLayers): one, or one
 // per piece of a cut-out pose.
+#include "line_runs.h"
+
 #include <finbook/model/fill/fill_render.h>
 
 #include <algorithm>
@@ -311,6 +313,7 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         std::size_t layer;
         PaintItem item;
         std::ptrdiff_t run; // into layers[layer].runs, or −1: the item as it is
+        bool seam = false;  // the run is a seam's arc
     };
     std::vector<Entry> entries; // in painting order
     for (const PaintItem &item : items) {
@@ -332,10 +335,11 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         }
         std::size_t layer = layerOfPiece(piece[0]);
         std::vector<StrokePoint> run;
-        const auto flush = [&](std::size_t into, std::vector<StrokePoint> &&part) {
+        const auto flush = [&](std::size_t into, std::vector<StrokePoint> &&part,
+                               bool seam = false) {
             if (part.size() < 2)
                 return;
-            entries.push_back({into, item, std::ptrdiff_t(layers[into].runs.size())});
+            entries.push_back({into, item, std::ptrdiff_t(layers[into].runs.size()), seam});
             layers[into].runs.push_back(std::move(part));
         };
         for (std::size_t i = 0; i + 1 < points.size(); ++i) {
@@ -372,10 +376,48 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
             run.push_back(seam->arc.front());
             flush(layer, std::exchange(run, {}));
             run = {seam->arc.back(), points[i + 1]};
-            flush(above, std::move(seam->arc));
+            flush(above, std::move(seam->arc), true);
             layer = layerOfPiece(b);
         }
         flush(layer, std::move(run));
+    }
+    // The parts of lines that the pose laid inside one fill are left out (line_runs.h,
+    // MergedLines), as Apply Pose leaves them out.
+    if (rigid && !rest.empty()) {
+        const line_runs::MergedLines merged(group, layers, rest);
+        std::vector<Entry> kept;
+        kept.reserve(entries.size());
+        for (Entry &entry : entries) {
+            const std::vector<StrokePoint> &points =
+                entry.run >= 0 ? layers[entry.layer].runs[std::size_t(entry.run)]
+                               : *entry.item.points;
+            if (!merged.any() || points.size() < 2) {
+                kept.push_back(entry);
+                continue;
+            }
+            std::vector<line_runs::Segment> segments;
+            for (std::size_t k = 0; k + 1 < points.size(); ++k)
+                segments.push_back({points[k], points[k + 1], entry.layer, entry.seam});
+            const double width = entry.item.width;
+            std::vector<line_runs::Run> runs = line_runs::withoutSlivers(
+                line_runs::runsOf(segments,
+                                  [&](const line_runs::Segment &s, QPointF p) {
+                                      return merged.hides(s.layer, p, width, s.seam);
+                                  }),
+                std::min(line_runs::kShortestHiddenRun, 0.5 * width));
+            if (runs.size() == 1 && runs.front().shows) {
+                kept.push_back(entry);
+                continue;
+            }
+            for (line_runs::Run &run : runs) {
+                if (!run.shows)
+                    continue;
+                kept.push_back({entry.layer, entry.item,
+                                std::ptrdiff_t(layers[entry.layer].runs.size()), entry.seam});
+                layers[entry.layer].runs.push_back(std::move(run.points));
+            }
+        }
+        entries = std::move(kept);
     }
     // Every run is stored before an item points at one (the runs do not move after).
     for (Entry &entry : entries) {

@@ -89,9 +89,10 @@ enum class HiddenLines { Drop, KeepUnseen };
 std::vector<Stroke> bakedStrokes(const StrokeGroup &group, double closeGap,
                                  const std::function<Id()> &newId,
                                  HiddenLines hidden = HiddenLines::Drop);
-// The same with the group's paintLayers already made (the SVG export paints them too).
+// The same with the group's paintLayers already made with `settings` (the SVG export paints
+// them too).
 std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<PaintLayer> &layers,
-                                 const std::function<Id()> &newId,
+                                 const DocumentSettings &settings, const std::function<Id()> &newId,
                                  HiddenLines hidden = HiddenLines::Drop);
 
 // Paints one item: its path, then its tones (the canvas raster draws its own way).

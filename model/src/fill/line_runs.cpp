@@ -1,0 +1,234 @@
+// A cut-out pose's lines cut into what shows and what is hidden (line_runs.h).
+#include "line_runs.h"
+
+#include <QPainter>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace finbook::model::line_runs {
+
+namespace {
+
+// Bisection steps for where a segment enters or leaves hiding: 2⁻¹⁴ of a segment a few px
+// long is far below what a pen shows.
+constexpr int kCrossingSteps = 14;
+
+// How far past a line's half width (px) its sides are looked at, and at how many points round
+// it.
+constexpr double kSideReach = 1.0;
+constexpr int kRound = 8;
+
+StrokePoint lerp(const StrokePoint &a, const StrokePoint &b, double t)
+{
+    const auto mix = [t](float u, float v) { return float(u + (v - u) * t); };
+    return {mix(a.x, b.x), mix(a.y, b.y), mix(a.pressure, b.pressure)};
+}
+
+QPointF at(const StrokePoint &p)
+{
+    return {p.x, p.y};
+}
+
+} // namespace
+
+std::vector<Run> runsOf(const std::vector<Segment> &segments, const Hides &hides)
+{
+    // Consecutive segments share their ends, so a run takes each segment's start only when it
+    // begins there (points repeated in the stroke stay as drawn).
+    std::vector<Run> runs;
+    Run run;
+    const auto end = [&] {
+        if (run.points.size() >= 2)
+            runs.push_back(std::move(run));
+        run.points.clear();
+    };
+    const auto add = [&run](const StrokePoint &p, bool shows) {
+        run.shows = shows;
+        run.points.push_back(p);
+    };
+    // Adds the part of a segment from `a` to `b`, all of one kind.
+    const auto extend = [&](const StrokePoint &a, const StrokePoint &b, bool shows) {
+        if (!run.points.empty() && run.shows != shows) {
+            const StrokePoint last = run.points.back();
+            end();
+            add(last, shows);
+        }
+        if (run.points.empty())
+            add(a, shows);
+        add(b, shows);
+    };
+    for (const Segment &s : segments) {
+        const bool aShows = !hides(s, at(s.a));
+        const bool bShows = !hides(s, at(s.b));
+        if (aShows == bShows) {
+            extend(s.a, s.b, aShows);
+            continue;
+        }
+        // One end shows: where hiding begins lies between them.
+        double shown = aShows ? 0.0 : 1.0, hidden = 1.0 - shown;
+        for (int step = 0; step < kCrossingSteps; ++step) {
+            const double mid = 0.5 * (shown + hidden);
+            (hides(s, at(lerp(s.a, s.b, mid))) ? hidden : shown) = mid;
+        }
+        const StrokePoint edge = lerp(s.a, s.b, shown);
+        extend(s.a, edge, aShows);
+        extend(edge, s.b, bShows);
+    }
+    end();
+    return runs;
+}
+
+std::vector<Run> withoutSlivers(std::vector<Run> runs, double shortest)
+{
+    for (Run &run : runs) {
+        double length = 0.0;
+        for (std::size_t k = 1; k < run.points.size() && length < shortest; ++k)
+            length += std::hypot(double(run.points[k].x - run.points[k - 1].x),
+                                 double(run.points[k].y - run.points[k - 1].y));
+        if (!run.shows && length < shortest)
+            run.shows = true;
+    }
+    std::vector<Run> joined;
+    for (Run &run : runs) {
+        if (!joined.empty() && joined.back().shows == run.shows && !run.points.empty()) {
+            std::vector<StrokePoint> &points = joined.back().points;
+            points.insert(points.end(), run.points.begin() + 1, run.points.end());
+            continue;
+        }
+        joined.push_back(std::move(run));
+    }
+    return joined;
+}
+
+FillRaster::FillRaster(const std::vector<const FillItem *> &items)
+{
+    QRectF bounds;
+    for (const FillItem *item : items)
+        bounds |= item->path.controlPointRect();
+    if (items.empty() || !bounds.isValid() || !std::isfinite(bounds.width()) ||
+        !std::isfinite(bounds.height()))
+        return;
+    // A px per canvas px, fewer for a drawing beyond kMostPixels.
+    m_scale =
+        std::min(1.0, std::sqrt(kMostPixels / std::max(1.0, bounds.width() * bounds.height())));
+    m_origin = bounds.topLeft();
+    const int w = int(std::ceil(bounds.width() * m_scale)) + 1;
+    const int h = int(std::ceil(bounds.height() * m_scale)) + 1;
+    m_image = QImage(w, h, QImage::Format_RGB32);
+    m_image.fill(0);
+    QPainter painter(&m_image);
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    painter.setPen(Qt::NoPen);
+    painter.scale(m_scale, m_scale);
+    painter.translate(-m_origin);
+    for (const FillItem *item : items)
+        painter.fillPath(item->path, QColor::fromRgb(QRgb(item->fill + 1)));
+}
+
+int FillRaster::at(QPointF p) const
+{
+    const double x = std::floor((p.x() - m_origin.x()) * m_scale);
+    const double y = std::floor((p.y() - m_origin.y()) * m_scale);
+    if (m_image.isNull() || !(x >= 0.0 && y >= 0.0 && x < m_image.width() && y < m_image.height()))
+        return -1;
+    const QRgb value = reinterpret_cast<const QRgb *>(m_image.constScanLine(int(y)))[int(x)];
+    return int(value & 0xffffffu) - 1;
+}
+
+namespace {
+// The items of `layers` with a fill index, in the order they are painted.
+std::vector<const FillItem *> indexed(const std::vector<PaintLayer> &layers)
+{
+    std::vector<const FillItem *> out;
+    for (const PaintLayer &layer : layers)
+        for (const FillItem &item : layer.fills)
+            if (item.fill >= 0 && item.fill < 0xfffffe)
+                out.push_back(&item);
+    return out;
+}
+
+std::vector<const FillItem *> indexed(const std::vector<FillItem> &items)
+{
+    std::vector<const FillItem *> out;
+    for (const FillItem &item : items)
+        if (item.fill >= 0 && item.fill < 0xfffffe)
+            out.push_back(&item);
+    return out;
+}
+} // namespace
+
+MergedLines::MergedLines(const StrokeGroup &group, const std::vector<PaintLayer> &layers,
+                         const std::vector<FillItem> &rest)
+{
+    const DeformedStrokes *posed = group.deformed.get();
+    if (!posed || posed->pieces.empty() || rest.empty() || posed->motions.size() != layers.size())
+        return;
+    m_back.resize(layers.size());
+    for (std::size_t layer = 0; layer < layers.size(); ++layer) {
+        if (!posed->motions[layer])
+            continue;
+        bool invertible = false;
+        const QTransform back = posed->motions[layer]->inverted(&invertible);
+        if (invertible)
+            m_back[layer] = back;
+    }
+    // Only a piece that moved against another can lay a line inside a fill (at rest, or all
+    // moved as one, each line bounds what it bounded).
+    const auto differ = [](const QTransform &a, const QTransform &b) {
+        const double worst =
+            std::max({std::abs(a.m11() - b.m11()), std::abs(a.m12() - b.m12()),
+                      std::abs(a.m21() - b.m21()), std::abs(a.m22() - b.m22()),
+                      std::abs(a.dx() - b.dx()) * 1e-3, std::abs(a.dy() - b.dy()) * 1e-3});
+        return !(worst < 1e-6);
+    };
+    for (std::size_t layer = 1; layer < layers.size() && !m_any; ++layer)
+        m_any = m_back[layer] && (!m_back[0] || differ(*m_back[layer], *m_back[0]));
+    if (!m_any)
+        return;
+    // A line of the roots' piece can lie so only where a cut piece or a socket lies round it.
+    for (const QPainterPath &piece : posed->pieces)
+        m_near.push_back(piece.controlPointRect());
+    for (const QPainterPath &socket : posed->sockets)
+        if (!socket.isEmpty())
+            m_near.push_back(socket.controlPointRect());
+    m_shown = FillRaster(indexed(layers));
+    m_rest = FillRaster(indexed(rest));
+}
+
+bool MergedLines::hides(std::size_t layer, QPointF p, double width, bool seam) const
+{
+    if (!m_any || layer >= m_back.size() || !m_back[layer])
+        return false;
+    const double reach =
+        0.5 * (std::isfinite(width) ? std::clamp(width, 0.0, 64.0) : 1.0) + kSideReach;
+    if (layer == 0 && std::none_of(m_near.begin(), m_near.end(), [&](const QRectF &near) {
+            return near.adjusted(-reach, -reach, reach, reach).contains(p);
+        }))
+        return false;
+    // Round the point rather than either side of the line: a traced outline's stair steps
+    // turn each segment's own direction across the line.
+    std::array<QPointF, kRound> round;
+    for (int k = 0; k < kRound; ++k) {
+        const double angle = 2.0 * std::numbers::pi * k / kRound;
+        round[std::size_t(k)] = QPointF(std::cos(angle), std::sin(angle)) * reach;
+    }
+    const int shown = m_shown.at(p + round[0]);
+    if (shown < 0)
+        return false;
+    for (std::size_t k = 1; k < round.size(); ++k)
+        if (m_shown.at(p + round[k]) != shown)
+            return false;
+    if (seam)
+        return true;
+    // At rest the line bounded that fill: round it, the fill on one side and not on the other.
+    const QTransform &back = *m_back[layer];
+    bool in = false, out = false;
+    for (const QPointF &offset : round)
+        (m_rest.at(back.map(p + offset)) == shown ? in : out) = true;
+    return in && out;
+}
+
+} // namespace finbook::model::line_runs
