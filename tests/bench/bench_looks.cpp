@@ -503,51 +503,61 @@ void judgeFile(const QString &file, const std::vector<double> &degrees, const QS
                 };
                 const double rho = pen + 1.5; // past the line from any of its pixels
                 constexpr int kRing = 12;
-                std::vector<std::size_t> merged;
+                std::vector<std::size_t> merged, oneColour;
                 for (int y = 0; y < h; ++y)
                     for (int x = 0; x < w; ++x) {
                         const std::size_t i = index(x, y);
                         if (ideal[i] != Ink || inkFrom[i] == std::size_t(-1))
                             continue;
-                        // Round it as the paper shows it: one fill colour everywhere not ink.
-                        std::optional<QRgb> colour;
-                        int seen = 0;
-                        bool one = true;
-                        for (int k = 0; k < kRing && one; ++k) {
+                        // Round it as the paper shows it: fill everywhere not ink, of one colour
+                        // (but for two points on an anti-aliased rim).
+                        std::vector<QRgb> seen;
+                        bool filled = true;
+                        for (int k = 0; k < kRing && filled; ++k) {
                             const double a = 2.0 * std::numbers::pi * k / kRing;
                             const std::size_t q = restAt(
                                 QPointF(x + 0.5 + rho * std::cos(a), y + 0.5 + rho * std::sin(a)));
-                            if (q == std::size_t(-1) || ideal[q] == Background) {
-                                one = false;
-                            } else if (ideal[q] == Fill && idealFrom[q] != std::size_t(-1)) {
-                                const QRgb c = restPixels[idealFrom[q]];
-                                one = !colour || sameColour(*colour, c);
-                                colour = colour.value_or(c);
-                                ++seen;
-                            }
+                            if (q == std::size_t(-1) || ideal[q] == Background)
+                                filled = false;
+                            else if (ideal[q] == Fill && idealFrom[q] != std::size_t(-1))
+                                seen.push_back(restPixels[idealFrom[q]]);
                         }
-                        if (!one || seen < kRing / 2)
+                        if (!filled || seen.size() < std::size_t(kRing / 2))
+                            continue;
+                        std::optional<QRgb> colour;
+                        for (const QRgb c : seen)
+                            if (std::count_if(seen.begin(), seen.end(),
+                                              [&](QRgb d) { return sameColour(c, d); }) +
+                                    2 >=
+                                std::ptrdiff_t(seen.size()))
+                                colour = c;
+                        if (!colour)
                             continue;
                         // Round it at rest: that colour on one side, something else on the other.
                         const std::size_t r = inkFrom[i];
                         const double rx = double(r % std::size_t(w)) + 0.5,
                                      ry = double(r / std::size_t(w)) + 0.5;
-                        // (Two rings: a traced outline's stair steps can put one ring's
-                        // points all on ink or on one side.)
                         bool in = false, out = false;
-                        for (int k = 0; k < 2 * kRing; ++k) {
+                        for (int k = 0; k < kRing; ++k) {
                             const double a = 2.0 * std::numbers::pi * k / kRing;
-                            const double far = k < kRing ? rho : 2.0 * rho;
                             const std::size_t q =
-                                restAt(QPointF(rx + far * std::cos(a), ry + far * std::sin(a)));
+                                restAt(QPointF(rx + rho * std::cos(a), ry + rho * std::sin(a)));
                             if (q == std::size_t(-1) || restClass[q] == Background)
                                 out = true;
                             else if (restClass[q] == Fill)
                                 (sameColour(restPixels[q], *colour) ? in : out) = true;
                         }
-                        if (in && out)
-                            merged.push_back(i);
+                        (in && out ? merged : oneColour).push_back(i);
                     }
+                // A pixel of one colour all round that lies along a merged line is of it too
+                // (the rest test misses pixels here and there on a traced outline's steps).
+                std::vector<bool> isMerged(shown.size(), false);
+                for (const std::size_t i : merged)
+                    isMerged[i] = true;
+                const std::vector<float> toMerged = distanceTo(isMerged, w, h);
+                for (const std::size_t i : oneColour)
+                    if (toMerged[i] <= 2.0 * pen)
+                        merged.push_back(i);
                 for (const std::size_t i : merged)
                     ideal[i] = Fill;
             }
