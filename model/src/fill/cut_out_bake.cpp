@@ -120,14 +120,18 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<Pai
         // Hidden: under a piece above, or laid inside one fill (MergedLines), as paintLayers
         // leaves it out.
         const double width = stroke.data->width;
-        const auto hides = [&](const Segment &s, QPointF p) {
-            return covers.hides(s.layer, p) || merged.hides(s.layer, p, width, s.seam);
+        const auto laidInside = [&](const Segment &s, QPointF p) {
+            return merged.hides(s.layer, p, width, s.seam);
         };
-        std::vector<Run> runs =
-            line_runs::withoutSlivers(line_runs::runsOf(layeredSegments(group, i, points), hides),
-                                      std::min(kShortestHiddenRun, 0.5 * width));
+        const auto covered = [&](const Segment &s, QPointF p) { return covers.hides(s.layer, p); };
+        std::vector<Run> runs = line_runs::withoutSlivers(
+            line_runs::runsOf(line_runs::cutWhere(
+                line_runs::cutWhere(line_runs::piecesOf(layeredSegments(group, i, points)),
+                                    laidInside, line_runs::Hidden::Merged),
+                covered, line_runs::Hidden::Covered)),
+            std::min(kShortestHiddenRun, 0.5 * width));
         std::erase_if(runs, [hidden](const Run &run) {
-            return !run.shows &&
+            return !run.shows() &&
                    (hidden == HiddenLines::Drop ||
                     std::all_of(run.points.begin(), run.points.end(), [&](const StrokePoint &p) {
                         return p.x == run.points.front().x && p.y == run.points.front().y;
@@ -135,12 +139,12 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<Pai
         });
         // The stroke's id stays with its first part that shows.
         const auto keeper =
-            std::find_if(runs.begin(), runs.end(), [](const Run &run) { return run.shows; });
+            std::find_if(runs.begin(), runs.end(), [](const Run &run) { return run.shows(); });
         const std::size_t keep = keeper == runs.end() ? 0 : std::size_t(keeper - runs.begin());
         for (std::size_t r = 0; r < runs.size(); ++r) {
             auto part = std::make_shared<StrokeData>(*data);
             part->points = std::move(runs[r].points);
-            if (!runs[r].shows)
+            if (!runs[r].shows())
                 part->color = kHiddenLineColor;
             out.push_back({r == keep ? stroke.id : newId(), std::move(part)});
         }

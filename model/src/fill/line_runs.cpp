@@ -34,50 +34,64 @@ QPointF at(const StrokePoint &p)
 
 } // namespace
 
-std::vector<Run> runsOf(const std::vector<Segment> &segments, const Hides &hides)
+std::vector<Piece> piecesOf(const std::vector<Segment> &segments)
+{
+    std::vector<Piece> pieces;
+    pieces.reserve(segments.size());
+    for (const Segment &segment : segments)
+        pieces.push_back({segment, Hidden::No});
+    return pieces;
+}
+
+std::vector<Piece> cutWhere(const std::vector<Piece> &pieces, const Hides &hides, Hidden kind)
+{
+    std::vector<Piece> out;
+    out.reserve(pieces.size());
+    for (const Piece &piece : pieces) {
+        if (piece.hidden != Hidden::No) {
+            out.push_back(piece);
+            continue;
+        }
+        const Segment &s = piece.segment;
+        const bool atA = hides(s, at(s.a)), atB = hides(s, at(s.b));
+        if (atA == atB) {
+            out.push_back({s, atA ? kind : Hidden::No});
+            continue;
+        }
+        // Where it changes lies between them.
+        double same = 0.0, other = 1.0;
+        for (int step = 0; step < kCrossingSteps; ++step) {
+            const double mid = 0.5 * (same + other);
+            (hides(s, at(lerp(s.a, s.b, mid))) == atA ? same : other) = mid;
+        }
+        Segment first = s, second = s;
+        first.b = second.a = lerp(s.a, s.b, same);
+        out.push_back({first, atA ? kind : Hidden::No});
+        out.push_back({second, atB ? kind : Hidden::No});
+    }
+    return out;
+}
+
+std::vector<Run> runsOf(const std::vector<Piece> &pieces)
 {
     // Consecutive segments share their ends, so a run takes each segment's start only when it
     // begins there (points repeated in the stroke stay as drawn).
     std::vector<Run> runs;
     Run run;
-    const auto end = [&] {
-        if (run.points.size() >= 2)
-            runs.push_back(std::move(run));
-        run.points.clear();
-    };
-    const auto add = [&run](const StrokePoint &p, bool shows) {
-        run.shows = shows;
-        run.points.push_back(p);
-    };
-    // Adds the part of a segment from `a` to `b`, all of one kind.
-    const auto extend = [&](const StrokePoint &a, const StrokePoint &b, bool shows) {
-        if (!run.points.empty() && run.shows != shows) {
+    for (const Piece &piece : pieces) {
+        if (!run.points.empty() && run.hidden != piece.hidden) {
             const StrokePoint last = run.points.back();
-            end();
-            add(last, shows);
+            if (run.points.size() >= 2)
+                runs.push_back(std::move(run));
+            run.points = {last};
         }
+        run.hidden = piece.hidden;
         if (run.points.empty())
-            add(a, shows);
-        add(b, shows);
-    };
-    for (const Segment &s : segments) {
-        const bool aShows = !hides(s, at(s.a));
-        const bool bShows = !hides(s, at(s.b));
-        if (aShows == bShows) {
-            extend(s.a, s.b, aShows);
-            continue;
-        }
-        // One end shows: where hiding begins lies between them.
-        double shown = aShows ? 0.0 : 1.0, hidden = 1.0 - shown;
-        for (int step = 0; step < kCrossingSteps; ++step) {
-            const double mid = 0.5 * (shown + hidden);
-            (hides(s, at(lerp(s.a, s.b, mid))) ? hidden : shown) = mid;
-        }
-        const StrokePoint edge = lerp(s.a, s.b, shown);
-        extend(s.a, edge, aShows);
-        extend(edge, s.b, bShows);
+            run.points.push_back(piece.segment.a);
+        run.points.push_back(piece.segment.b);
     }
-    end();
+    if (run.points.size() >= 2)
+        runs.push_back(std::move(run));
     return runs;
 }
 
@@ -88,12 +102,12 @@ std::vector<Run> withoutSlivers(std::vector<Run> runs, double shortest)
         for (std::size_t k = 1; k < run.points.size() && length < shortest; ++k)
             length += std::hypot(double(run.points[k].x - run.points[k - 1].x),
                                  double(run.points[k].y - run.points[k - 1].y));
-        if (!run.shows && length < shortest)
-            run.shows = true;
+        if (run.hidden == Hidden::Covered && length < shortest)
+            run.hidden = Hidden::No;
     }
     std::vector<Run> joined;
     for (Run &run : runs) {
-        if (!joined.empty() && joined.back().shows == run.shows && !run.points.empty()) {
+        if (!joined.empty() && joined.back().hidden == run.hidden && !run.points.empty()) {
             std::vector<StrokePoint> &points = joined.back().points;
             points.insert(points.end(), run.points.begin() + 1, run.points.end());
             continue;
@@ -223,11 +237,16 @@ bool MergedLines::hides(std::size_t layer, QPointF p, double width, bool seam) c
             return false;
     if (seam)
         return true;
-    // At rest the line bounded that fill: round it, the fill on one side and not on the other.
+    // At rest the line was that fill's edge: round it, the fill on one side and no fill on the
+    // other. (A line between it and another fill stays: left out, the two would be one region
+    // once the pose is applied.)
     const QTransform &back = *m_back[layer];
     bool in = false, out = false;
-    for (const QPointF &offset : round)
-        (m_rest.at(back.map(p + offset)) == shown ? in : out) = true;
+    for (const QPointF &offset : round) {
+        const int fill = m_rest.at(back.map(p + offset));
+        in = in || fill == shown;
+        out = out || fill < 0;
+    }
     return in && out;
 }
 

@@ -21,22 +21,40 @@ struct Segment {
     bool seam = false;
 };
 
+// Whether a point of a line shows, or why it is hidden: under a piece drawn over it, or laid
+// inside one fill (MergedLines).
+enum class Hidden { No, Covered, Merged };
+
 // A stretch of a line that shows, or that is hidden, as a polyline of two points or more.
 struct Run {
     std::vector<StrokePoint> points;
-    bool shows = true;
+    Hidden hidden = Hidden::No;
+    bool shows() const { return hidden == Hidden::No; }
 };
 
-// Whether the point p of a segment is hidden.
+// A segment, whole or in part, and whether it shows.
+struct Piece {
+    Segment segment;
+    Hidden hidden = Hidden::No;
+};
+std::vector<Piece> piecesOf(const std::vector<Segment> &segments);
+
+// Whether the point p of a segment is hidden (for one reason).
 using Hides = std::function<bool(const Segment &segment, QPointF p)>;
 
-// `segments` cut into the runs that show and those hidden, in order: each run ends where the
-// next begins (where hiding begins or ends, found by bisection), so together they are the
-// whole line.
-std::vector<Run> runsOf(const std::vector<Segment> &segments, const Hides &hides);
+// `pieces` with each one that shows cut where `hides` changes, found by bisection between its
+// ends where they differ, the hidden parts marked `kind`. Cut for one reason after another,
+// each reason decides the same on the same segments whatever came before: the painting cuts
+// only for MergedLines, Apply Pose for it and then for the pieces drawn over a line.
+std::vector<Piece> cutWhere(const std::vector<Piece> &pieces, const Hides &hides, Hidden kind);
 
-// `runs` with the hidden ones shorter than `shortest` (px) shown, and runs of one kind that
-// follow each other joined (each begins where the one before ends).
+// The pieces joined into runs of one kind, in order: each run ends where the next begins, so
+// together they are the whole line.
+std::vector<Run> runsOf(const std::vector<Piece> &pieces);
+
+// `runs` with the covered ones shorter than `shortest` (px) shown, and runs of one kind that
+// follow each other joined (each begins where the one before ends). Merged runs stay hidden
+// however short: the painting cuts them so too, and each side of them is of one fill.
 std::vector<Run> withoutSlivers(std::vector<Run> runs, double shortest);
 
 // A hidden run shorter than this (px, and than half the pen) shows: a cover's edge that grazes a

@@ -399,22 +399,22 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
             for (std::size_t k = 0; k + 1 < points.size(); ++k)
                 segments.push_back({points[k], points[k + 1], entry.layer, entry.seam});
             const double width = entry.item.width;
-            std::vector<line_runs::Run> runs = line_runs::withoutSlivers(
-                line_runs::runsOf(segments,
-                                  [&](const line_runs::Segment &s, QPointF p) {
-                                      return merged.hides(s.layer, p, width, s.seam);
-                                  }),
-                std::min(line_runs::kShortestHiddenRun, 0.5 * width));
-            if (runs.size() == 1 && runs.front().shows) {
+            const std::vector<line_runs::Run> runs = line_runs::runsOf(line_runs::cutWhere(
+                line_runs::piecesOf(segments),
+                [&](const line_runs::Segment &s, QPointF p) {
+                    return merged.hides(s.layer, p, width, s.seam);
+                },
+                line_runs::Hidden::Merged));
+            if (runs.size() == 1 && runs.front().shows()) {
                 kept.push_back(entry);
                 continue;
             }
-            for (line_runs::Run &run : runs) {
-                if (!run.shows)
+            for (const line_runs::Run &run : runs) {
+                if (!run.shows())
                     continue;
                 kept.push_back({entry.layer, entry.item,
                                 std::ptrdiff_t(layers[entry.layer].runs.size()), entry.seam});
-                layers[entry.layer].runs.push_back(std::move(run.points));
+                layers[entry.layer].runs.push_back(run.points);
             }
         }
         entries = std::move(kept);
