@@ -174,6 +174,15 @@ std::vector<const FillItem *> indexed(const std::vector<FillItem> &items)
 }
 } // namespace
 
+bool movedApart(const QTransform &a, const QTransform &b)
+{
+    const double worst =
+        std::max({std::abs(a.m11() - b.m11()), std::abs(a.m12() - b.m12()),
+                  std::abs(a.m21() - b.m21()), std::abs(a.m22() - b.m22()),
+                  std::abs(a.dx() - b.dx()) * 1e-3, std::abs(a.dy() - b.dy()) * 1e-3});
+    return !(worst < 1e-6);
+}
+
 MergedLines::MergedLines(const StrokeGroup &group, const std::vector<PaintLayer> &layers,
                          const std::vector<FillItem> &rest)
 {
@@ -191,15 +200,8 @@ MergedLines::MergedLines(const StrokeGroup &group, const std::vector<PaintLayer>
     }
     // Only a piece that moved against another can lay a line inside a fill (at rest, or all
     // moved as one, each line bounds what it bounded).
-    const auto differ = [](const QTransform &a, const QTransform &b) {
-        const double worst =
-            std::max({std::abs(a.m11() - b.m11()), std::abs(a.m12() - b.m12()),
-                      std::abs(a.m21() - b.m21()), std::abs(a.m22() - b.m22()),
-                      std::abs(a.dx() - b.dx()) * 1e-3, std::abs(a.dy() - b.dy()) * 1e-3});
-        return !(worst < 1e-6);
-    };
     for (std::size_t layer = 1; layer < layers.size() && !m_any; ++layer)
-        m_any = m_back[layer] && (!m_back[0] || differ(*m_back[layer], *m_back[0]));
+        m_any = m_back[layer] && (!m_back[0] || movedApart(*m_back[layer], *m_back[0]));
     if (!m_any)
         return;
     // A line of the roots' piece can lie so only where a cut piece or a socket lies round it.

@@ -62,6 +62,10 @@ std::vector<Run> withoutSlivers(std::vector<Run> runs, double shortest);
 // wrong line, opening the loop the line closed (a body losing its fill after Apply Pose).
 constexpr double kShortestHiddenRun = 1.0;
 
+// Whether two pieces' motions differ (the joint between them turned; a thousandth of a px in
+// the shift, a millionth in the turn, is none).
+bool movedApart(const QTransform &a, const QTransform &b);
+
 // Lines a cut-out pose laid inside one fill. A line of a piece that moved rigidly that at rest
 // bounded a fill, with that fill on one side and not on the other (the edge of an arm whose
 // body is of the same colour, or the body's edge next to the arm), but that the pose laid

@@ -272,12 +272,7 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         const std::size_t above = layerAbove(k);
         if (posed->motions.size() != pieces + 1 || !posed->motions[k + 1] || !posed->motions[above])
             return true;
-        const QTransform &a = *posed->motions[k + 1], &b = *posed->motions[above];
-        const double worst =
-            std::max({std::abs(a.m11() - b.m11()), std::abs(a.m12() - b.m12()),
-                      std::abs(a.m21() - b.m21()), std::abs(a.m22() - b.m22()),
-                      std::abs(a.dx() - b.dx()) * 1e-3, std::abs(a.dy() - b.dy()) * 1e-3});
-        return !(worst < 1e-6);
+        return line_runs::movedApart(*posed->motions[k + 1], *posed->motions[above]);
     };
     for (std::size_t k = 0; k < pieces && k < posed->sockets.size(); ++k) {
         const QPainterPath &socket = posed->sockets[k];
