@@ -66,13 +66,6 @@ constexpr double kShortestHiddenRun = 1.0;
 // the shift, a millionth in the turn, is none).
 bool movedApart(const QTransform &a, const QTransform &b);
 
-// Lines a cut-out pose laid inside one fill. A line of a piece that moved rigidly that at rest
-// bounded a fill, with that fill on one side and not on the other (the edge of an arm whose
-// body is of the same colour, or the body's edge next to the arm), but that the pose laid
-// where the picture shows that fill all round it (the arm turned in over its body, the body's
-// edge over the arm's socket): it would show as a stub ending at the joint, a line across one
-// area of one colour that the drawing never had. Both the picture and Apply Pose leave such a
-// line out where it lies so, as the rest drawing showed no line between the arm and its body.
 // Which fill the given items show at a point (the last holding it; −1 none), as a raster of a
 // px per canvas px (coarser beyond kMostPixels), so that each answer is one read.
 class FillRaster {
@@ -88,6 +81,13 @@ private:
     double m_scale = 1.0;
 };
 
+// Lines a cut-out pose laid inside one fill. A line of a piece that moved rigidly that at rest
+// bounded a fill, with that fill on one side and no fill on the other (the edge of an arm whose
+// body is of the same colour, or the body's edge next to the arm), but that the pose laid
+// where the picture shows that fill all round it (the arm turned in over its body, the body's
+// edge over the arm's socket): it would show as a stub ending at the joint, a line across one
+// area of one colour that the drawing never had. Both the picture and Apply Pose leave such a
+// line out where it lies so, as the rest drawing showed no line between the arm and its body.
 class MergedLines {
 public:
     // `layers`: the pose's painted layers with their fills (their strokes are not read);
@@ -95,10 +95,12 @@ public:
     MergedLines(const StrokeGroup &group, const std::vector<PaintLayer> &layers,
                 const std::vector<FillItem> &rest);
     // Whether the point p of a line `width` px wide drawn on `layer` lies so: the picture
-    // shows one fill all round it (half its width and a px away), and at rest the fill lay on
-    // one side of it only, or it is on a seam's arc (which stands for the outline there).
+    // shows one fill all round it (half its width and a px away), and at rest that fill lay
+    // on one side of it and no fill on the other, or it is on a seam's arc (which stands for
+    // the outline there).
     bool hides(std::size_t layer, QPointF p, double width, bool seam) const;
-    // Whether any line can lie so (the pose has a rigid cut piece and fills).
+    // Whether any line can lie so (a cut piece moved rigidly against the roots' one, and the
+    // object has fills).
     bool any() const { return m_any; }
 
 private:
