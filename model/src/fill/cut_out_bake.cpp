@@ -95,9 +95,16 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<Pai
         d->pieceOf.size() != group.strokes.size() || d->strokes.size() != group.strokes.size())
         return posedStrokes(group);
     const Covers covers(layers);
-    StrokeGroup still = group;
-    still.deformed.reset();
-    const MergedLines merged(group, layers, fillList(still, settings.closeGap));
+    // The rest fills, for MergedLines: only a piece that moved rigidly can lay a line inside
+    // one (as paintLayers, which makes them only then).
+    std::vector<FillItem> rest;
+    if (std::any_of(d->motions.begin(), d->motions.end(),
+                    [](const std::optional<QTransform> &m) { return m.has_value(); })) {
+        StrokeGroup still = group;
+        still.deformed.reset();
+        rest = fillList(still, settings.closeGap);
+    }
+    const MergedLines merged(group, layers, rest);
     std::vector<Stroke> out;
     out.reserve(group.strokes.size());
     for (std::size_t i = 0; i < group.strokes.size(); ++i) {
