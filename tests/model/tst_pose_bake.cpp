@@ -35,12 +35,9 @@ constexpr double kAgreePct = 99.5; // issue 45's target
 constexpr double kAreaChangePct = 0.5;
 constexpr long long kSpeck = 12; // pixels: a fill shown on fewer is a speck
 
-// Poses of the 12 per rig kind that may still change the picture (the known misses in the
-// README): a cut-out skeleton two, every other rig none.
-int kAllowedMisses(int kind, int mode)
-{
-    return RigKind(kind) == RigKind::Skeleton && SkinningMode(mode) == SkinningMode::CutOut ? 2 : 0;
-}
+// Seeds past the first 12 that the cut-out property runs too: poses in which a long straight
+// line (a limb's side) passed under a piece in its middle only, and Apply Pose showed it.
+constexpr unsigned kCutOutSeeds[] = {25, 42, 57};
 
 double uniform(std::mt19937 &rng, double lo, double hi)
 {
@@ -84,7 +81,8 @@ Id bodyWithArms(Document &doc, double armLength)
 
 struct Character {
     Id group = kNoId;
-    Id head = kNoId; // the head's stroke
+    Id head = kNoId;      // the head's stroke
+    Id firstLimb = kNoId; // the first limb's stroke
 };
 
 // A character drawn as an animator would: a body, a head overlapping it and two to four
@@ -118,7 +116,9 @@ Character drawCharacter(Document &doc, std::mt19937 &rng)
         const double width = uniform(rng, 22, 32);
         const double length = uniform(rng, 90, 130);
         const double heading = arm ? angle : std::numbers::pi / 2 - side * uniform(rng, 0.05, 0.3);
-        add(limb(root, heading, length, width));
+        const Id id = add(limb(root, heading, length, width));
+        if (i == 0)
+            c.firstLimb = id;
     }
     if (auto all = fillAllRegionsCommand(&doc, c.group, 0xff808080))
         doc.undoStack()->push(all.release());
@@ -345,7 +345,12 @@ void TestPoseBake::applyPoseKeepsWhatWasShown()
     QFETCH(int, kind);
     QFETCH(int, mode);
     int posed = 0, missed = 0;
-    for (unsigned seed = 1; seed <= 12; ++seed) {
+    std::vector<unsigned> seeds;
+    for (unsigned seed = 1; seed <= 12; ++seed)
+        seeds.push_back(seed);
+    if (SkinningMode(mode) == SkinningMode::CutOut && RigKind(kind) == RigKind::Skeleton)
+        seeds.insert(seeds.end(), std::begin(kCutOutSeeds), std::end(kCutOutSeeds));
+    for (const unsigned seed : seeds) {
         std::mt19937 rng(seed * 7919u + unsigned(kind) * 31u + unsigned(mode));
         Document doc;
         const Character c = drawCharacter(doc, rng);
@@ -401,13 +406,10 @@ void TestPoseBake::applyPoseKeepsWhatWasShown()
         QVERIFY2(doc.group(c.group)->rig == posedGroup.rig, qPrintable(what));
     }
     QVERIFY2(posed >= 8, qPrintable(QString::number(posed)));
-    // Known misses (README, "What you see is what you keep"): in a cut-out pose, fill that a
-    // piece showed under a line's outer half is lost (the filled area, under the ink, shrinks
-    // by more than 0.5 %), and a joint's socket wedge thinner than the pen (too thin for a
-    // seam: the regions would merge it into a neighbour) takes the body's colour; a fill on a
-    // sliver that a skeleton pose folds. Each miss is printed above.
+    // Every miss is printed above. (Poses past these seeds still miss now and then: README,
+    // "What you see is what you keep".)
     QVERIFY2(
-        missed <= kAllowedMisses(kind, mode),
+        missed == 0,
         qPrintable(QStringLiteral("%1 of %2 poses changed the picture").arg(missed).arg(posed)));
 }
 
@@ -439,7 +441,9 @@ void TestPoseBake::editsOnAPosedObjectKeepTheRest()
             stack->beginMacro(QStringLiteral("Edit (pose applied)"));
             stack->push(new ApplyPoseCommand(&doc, c.group));
             std::vector<StrokeDataPtr> touched;
-            QPainterPath facesOfHead; // for a move: the regions the head bounds, before and after
+            // For a move: the regions the head bounds before and after, filled one by one (as
+            // one path the two would cancel where they overlap under the odd-even rule).
+            std::vector<QPainterPath> facesOfHead;
             if (std::string_view(edit) == "stroke") {
                 // A line across the middle of the drawing: it cuts regions, whose halves keep
                 // their colours.
@@ -450,8 +454,14 @@ void TestPoseBake::editsOnAPosedObjectKeepTheRest()
             } else if (std::string_view(edit) == "erase") {
                 // A rub across the tip of the first limb (its point farthest from the body's
                 // centre): the limb's region opens to the outside and may lose its colour.
+                // (By id: Apply Pose may have split lines into parts shown and hidden, so the
+                // limb's outline need not be the third stroke any more.)
                 const StrokeGroup &g = *doc.group(c.group);
-                const Stroke &s = g.strokes.at(2);
+                const auto limb =
+                    std::find_if(g.strokes.begin(), g.strokes.end(),
+                                 [&](const Stroke &s) { return s.id == c.firstLimb; });
+                QVERIFY2(limb != g.strokes.end() && limb->data, qPrintable(what));
+                const Stroke &s = *limb;
                 const QPointF centre = shownBounds(g).center();
                 QPointF at(s.data->points.front().x, s.data->points.front().y);
                 for (const StrokePoint &p : s.data->points)
@@ -467,7 +477,7 @@ void TestPoseBake::editsOnAPosedObjectKeepTheRest()
                 touched.push_back(rubbed);
                 pushStrokeCut(&doc, s.id, *pieces);
             } else {
-                facesOfHead.addPath(facesAlong(doc, c.group, c.head));
+                facesOfHead.push_back(facesAlong(doc, c.group, c.head));
                 const StrokeData *head = strokeData(doc, c.group, c.head);
                 QVERIFY2(head, qPrintable(what));
                 auto moved = std::make_shared<StrokeData>(*head);
@@ -484,10 +494,11 @@ void TestPoseBake::editsOnAPosedObjectKeepTheRest()
             // others changes the regions it crosses).
             QImage ignore = strokeMask(touched, before.view, 10.0);
             if (std::string_view(edit) == "move") {
-                facesOfHead.addPath(facesAlong(doc, c.group, c.head));
+                facesOfHead.push_back(facesAlong(doc, c.group, c.head));
                 QPainter painter(&ignore);
                 painter.setTransform(before.view);
-                painter.fillPath(facesOfHead, Qt::black);
+                for (const QPainterPath &faces : facesOfHead)
+                    painter.fillPath(faces, Qt::black);
             }
             const Shown after = shown(doc, c.group, &before.view);
             const double kept = keptPct(before.picture, after.picture, ignore);
@@ -506,9 +517,7 @@ void TestPoseBake::editsOnAPosedObjectKeepTheRest()
             QVERIFY2(doc.group(c.group)->rig == rig, qPrintable(what));
         }
     }
-    // Of the 12 edits per rig kind, the known misses above (printed): a head moved over the
-    // limbs of a cut-out pose changes the overlaps it crossed (98.5 % kept outside the edit).
-    QVERIFY2(missed <= kAllowedMisses(kind, mode), qPrintable(QString::number(missed)));
+    QVERIFY2(missed == 0, qPrintable(QString::number(missed)));
 }
 
 // Issue 45, item 1: both arms raised ~100° in a cut-out pose turned the blue body yellow.
@@ -808,8 +817,11 @@ QTEST_MAIN(TestPoseBake)
 // the cut closers are there at all (a pose that turned limbs over the body needs some).
 void TestPoseBake::cutOutClosersNeverLieAlongEachOther()
 {
-    constexpr double kNear = 1.0;    // px: "along" means this close
-    constexpr double kLongest = 4.0; // px of one line that may lie along another (a crossing)
+    constexpr double kNear = 1.0; // px: "along" means this close
+    // px of one line that may lie along another: a crossing, or two seams meeting at a
+    // shallow angle at a line's corner (4.1 px in seed 5 once the lines hidden in the middle
+    // of a long segment were cut there too; the picture was the same before and after).
+    constexpr double kLongest = 5.0;
     int posed = 0, withClosers = 0;
     for (unsigned seed = 1; seed <= 12; ++seed) {
         std::mt19937 rng(seed * 7919u + unsigned(RigKind::Skeleton) * 31u +

@@ -15,6 +15,10 @@ namespace {
 // Bisection steps for where a segment enters or leaves hiding: 2⁻¹⁴ of a segment a few px
 // long is far below what a pen shows.
 constexpr int kCrossingSteps = 14;
+// A segment is looked at this often (px) along its length for where it enters or leaves
+// hiding, at most kMostSamples times (a corrupt file's segment may be kilometres long).
+constexpr double kSampleStep = 2.0;
+constexpr int kMostSamples = 4096;
 
 // How far past a line's half width (px) its sides are looked at, and at how many points round
 // it.
@@ -53,21 +57,37 @@ std::vector<Piece> cutWhere(const std::vector<Piece> &pieces, const Hides &hides
             continue;
         }
         const Segment &s = piece.segment;
-        const bool atA = hides(s, at(s.a)), atB = hides(s, at(s.b));
-        if (atA == atB) {
-            out.push_back({s, atA ? kind : Hidden::No});
-            continue;
+        // Looked at every kSampleStep px, not only at the ends: a segment drawn long and
+        // straight (a chord across a cut, a sketch's simplified line) may pass under a piece
+        // in its middle only.
+        const double length = std::hypot(double(s.b.x - s.a.x), double(s.b.y - s.a.y));
+        const int samples = std::clamp(int(std::ceil(length / kSampleStep)), 1, kMostSamples);
+        double from = 0.0; // where the current part begins
+        bool hidden = hides(s, at(s.a));
+        double last = 0.0;
+        for (int k = 1; k <= samples; ++k) {
+            const double t = double(k) / samples;
+            const bool now = hides(s, at(k == samples ? s.b : lerp(s.a, s.b, t)));
+            if (now != hidden) {
+                // Where it changes lies between the last two samples.
+                double same = last, other = t;
+                for (int step = 0; step < kCrossingSteps; ++step) {
+                    const double mid = 0.5 * (same + other);
+                    (hides(s, at(lerp(s.a, s.b, mid))) == hidden ? same : other) = mid;
+                }
+                Segment part = s;
+                part.a = from == 0.0 ? s.a : lerp(s.a, s.b, from);
+                part.b = lerp(s.a, s.b, same);
+                out.push_back({part, hidden ? kind : Hidden::No});
+                from = same;
+                hidden = now;
+            }
+            last = t;
         }
-        // Where it changes lies between them.
-        double same = 0.0, other = 1.0;
-        for (int step = 0; step < kCrossingSteps; ++step) {
-            const double mid = 0.5 * (same + other);
-            (hides(s, at(lerp(s.a, s.b, mid))) == atA ? same : other) = mid;
-        }
-        Segment first = s, second = s;
-        first.b = second.a = lerp(s.a, s.b, same);
-        out.push_back({first, atA ? kind : Hidden::No});
-        out.push_back({second, atB ? kind : Hidden::No});
+        Segment part = s;
+        if (from != 0.0)
+            part.a = lerp(s.a, s.b, from);
+        out.push_back({part, hidden ? kind : Hidden::No});
     }
     return out;
 }

@@ -42,10 +42,10 @@ std::vector<Piece> piecesOf(const std::vector<Segment> &segments);
 // Whether the point p of a segment is hidden (for one reason).
 using Hides = std::function<bool(const Segment &segment, QPointF p)>;
 
-// `pieces` with each one that shows cut where `hides` changes, found by bisection between its
-// ends where they differ, the hidden parts marked `kind`. Cut for one reason after another,
-// each reason decides the same on the same segments whatever came before: the painting cuts
-// only for MergedLines, Apply Pose for it and then for the pieces drawn over a line.
+// `pieces` with each one that shows cut where `hides` changes (looked at every 2 px along it,
+// found by bisection between two looks that differ), the hidden parts marked `kind`. Cut for one
+// reason after another, each reason decides the same on the same segments whatever came before: the
+// painting cuts only for MergedLines, Apply Pose for it and then for the pieces drawn over a line.
 std::vector<Piece> cutWhere(const std::vector<Piece> &pieces, const Hides &hides, Hidden kind);
 
 // The pieces joined into runs of one kind, in order: each run ends where the next begins, so
