@@ -6,6 +6,7 @@
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/erase/stroke_cut.h>
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/finbook_file.h>
@@ -132,6 +133,7 @@ bool pose(Document &doc, Id g, const Rig &rig)
 class TestFills : public QObject {
     Q_OBJECT
 private slots:
+    void linesOfNoInkGoWithTheInkedLinesTheyJoin();
     void fillRecolourRemoveEachOneUndoStep();
     void clickOutsideAnyRegionFillsNothing();
     void fillAllEnclosedRegions();
@@ -630,6 +632,42 @@ void TestFills::aFillWhoseOutlineLeftTheFaceYieldsIt()
     Fill alsoHere = moved;
     alsoHere.strokes = sorted({a, b, d});
     QCOMPARE(faceFills(*regions, {kept, alsoHere})[std::size_t(face)], 1);
+}
+
+// What a lasso picks after Apply Pose (tool_select): a line of no ink stays picked only when
+// every inked line its ends lie on is picked, and joins when all of them are; the parts of a
+// line that Apply Pose split share their ends across the hidden ones and are one line.
+void TestFills::linesOfNoInkGoWithTheInkedLinesTheyJoin()
+{
+    StrokeGroup g;
+    const auto add = [&](Id id, QPolygonF points, QRgb colour) {
+        g.strokes.push_back({id, polylineStroke(points, 4.0, 3.0f, colour)});
+    };
+    // A and B: two inked lines; C: a gap closer from A to B; D: a closer from A back to A; H:
+    // a hidden part of B's line, beginning where B ends; E: the shown part after H.
+    add(1, {QPointF(0, 0), QPointF(100, 0)}, 0xff000000);                        // A
+    add(2, {QPointF(0, 50), QPointF(100, 50)}, 0xff000000);                      // B
+    add(3, {QPointF(50, 0), QPointF(50, 50)}, kGapCloserColor);                  // C
+    add(4, {QPointF(20, 0), QPointF(20, -20), QPointF(40, 0)}, kGapCloserColor); // D
+    add(5, {QPointF(100, 50), QPointF(150, 50)}, kHiddenLineColor);              // H
+    add(6, {QPointF(150, 50), QPointF(200, 50)}, 0xff000000);                    // E
+    const auto sorted = [](std::vector<Id> ids) {
+        std::sort(ids.begin(), ids.end());
+        return ids;
+    };
+    // A lassoed with every line of no ink near it: C goes (it ends on B), H goes (it joins B
+    // and E), D stays.
+    QCOMPARE(sorted(withLinesOfNoInk(g, {1, 3, 4, 5})), (std::vector<Id>{1, 4}));
+    // A alone: D, both of whose ends lie on A, joins.
+    QCOMPARE(sorted(withLinesOfNoInk(g, {1})), (std::vector<Id>{1, 4}));
+    // Everything inked: every line of no ink joins.
+    QCOMPARE(sorted(withLinesOfNoInk(g, {1, 2, 6})), (std::vector<Id>{1, 2, 3, 4, 5, 6}));
+    // The lines as drawn: B, H and E are one (B's end is H's start, H's end E's start).
+    std::vector<std::vector<std::size_t>> lines = linesOfParts(g);
+    for (auto &line : lines)
+        std::sort(line.begin(), line.end());
+    std::sort(lines.begin(), lines.end());
+    QCOMPARE(lines, (std::vector<std::vector<std::size_t>>{{0}, {1, 4, 5}, {2}, {3}}));
 }
 
 QTEST_MAIN(TestFills)

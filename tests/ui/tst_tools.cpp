@@ -4,8 +4,11 @@
 #include "tst_tools_support.h"
 
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_regions.h>
+#include <finbook/model/finbook_file.h>
 #include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/picture/picture_object.h>
+#include <finbook/model/rig/rig_commands.h>
 #include <finbook/ui/tools/stroke_editing.h>
 #include <finbook/ui/tools/tool_eraser.h>
 #include <finbook/ui/tools/tool_eyedropper.h>
@@ -53,6 +56,7 @@ private slots:
     void rotateHandleRotatesSelection();
     void deleteSelection();
     void aCutOutPoseMovesAndDeletesWholeLines();
+    void aHeadLassoedAfterApplyPoseMovesAlone();
     void copyPasteIntoAnotherFrame();
     void selectAllSkipsLockedObjects();
     void clipboardRefusesMalformedData();
@@ -603,6 +607,60 @@ void TestTools::aCutOutPoseMovesAndDeletesWholeLines()
             QVERIFY2(std::hypot(p.x - arm->elbow.x(), p.y - arm->elbow.y()) > 10.0 ||
                          qAlpha(s.data->color) == 0,
                      "a part of the deleted arm is left at its elbow");
+}
+
+// The walkthrough of issue 45, drawn in the real window (tests/data/apply_pose_head.finbook):
+// a body, a head and two arms, filled, both arms raised 100° behind the head in a cut-out pose,
+// then Apply Pose. A lasso just round the head used to pick the hidden parts of the lines under
+// it and the lines of no ink beside it, and moving the head emptied the body and the right arm.
+void TestTools::aHeadLassoedAfterApplyPoseMovesAlone()
+{
+    using namespace finbook::testing;
+    QVERIFY(!model::openFinbook(
+        *m_doc, QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/apply_pose_head.finbook")));
+    m_state->setCurrentFrameIndex(0);
+    QVERIFY(!m_doc->frameAt(0).groups.empty());
+    const model::StrokeGroup &g = m_doc->frameAt(0).groups.front();
+    QVERIFY(!g.rig.isPosed());
+    // The head: the inked line highest up.
+    std::size_t head = 0;
+    float top = 1e9f;
+    for (std::size_t i = 0; i < g.strokes.size(); ++i)
+        if (qAlpha(g.strokes[i].data->color) != 0)
+            for (const model::StrokePoint &p : g.strokes[i].data->points)
+                if (p.y < top)
+                    top = p.y, head = i;
+    QRectF box;
+    for (const model::StrokePoint &p : g.strokes[head].data->points)
+        box |= QRectF(QPointF(p.x, p.y), QSizeF(0.01, 0.01));
+    const QTransform view = pictureView(shownBounds(g).adjusted(-40, -40, 40, 40), 480);
+    const QImage before = framePicture(*m_doc, 0, view, 480);
+    // The body below the arms, and the right arm half way up (the rightmost filled pixels of
+    // the row a third of the way down the drawing).
+    const QRectF all = shownBounds(g);
+    const QPointF belly(all.center().x(), all.bottom() - 0.25 * all.height());
+    const QRgb bodyColour = before.pixel(view.map(belly).toPoint());
+    // A lasso round the head, a tenth wider than it.
+    m_canvas->setCurrentTool(QStringLiteral("tool.select"));
+    std::vector<QPointF> lasso;
+    for (int k = 0; k <= 24; ++k) {
+        const double a = 2 * M_PI * k / 24;
+        lasso.push_back(
+            m_canvas->mapFromCanvas(box.center() + QPointF(0.55 * box.width() * std::cos(a),
+                                                           0.55 * box.height() * std::sin(a))));
+    }
+    drag(m_canvas.get(), lasso);
+    const std::vector<model::Id> picked = m_state->selectedStrokes();
+    QVERIFY(std::find(picked.begin(), picked.end(), g.strokes[head].id) != picked.end());
+    for (model::Id id : picked)
+        QVERIFY2(id == g.strokes[head].id || qAlpha(findStroke(*m_doc, id)->data->color) == 0,
+                 "an inked line other than the head was picked");
+    dragCanvas(m_canvas.get(), box.center(), box.center() + QPointF(40, 0), 5);
+    const QImage moved = framePicture(*m_doc, 0, view, 480);
+    QVERIFY2(sameColour(moved.pixel(view.map(belly).toPoint()), bodyColour),
+             qPrintable(QStringLiteral("the body shows %1, not %2")
+                            .arg(moved.pixel(view.map(belly).toPoint()), 0, 16)
+                            .arg(bodyColour, 0, 16)));
 }
 
 void TestTools::copyPasteIntoAnotherFrame()

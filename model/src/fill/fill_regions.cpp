@@ -380,4 +380,106 @@ ObjectRegionsPtr objectRegions(const StrokeGroup &group, double closeGap)
     return regions;
 }
 
+std::vector<Id> withLinesOfNoInk(const StrokeGroup &group, std::vector<Id> picked)
+{
+    const auto isPicked = [&](Id id) {
+        return std::find(picked.begin(), picked.end(), id) != picked.end();
+    };
+    // The inked lines whose displayed line passes within their half width (and half a px, or
+    // a px at least) of p.
+    const auto inkedAt = [&](QPointF p) {
+        std::vector<std::size_t> out;
+        for (std::size_t i = 0; i < group.strokes.size(); ++i) {
+            const Stroke &s = group.strokes[i];
+            if (!s.data || qAlpha(s.data->color) == 0)
+                continue;
+            const std::vector<StrokePoint> &points = displayedPoints(group, i);
+            const double reach = std::max(1.0, 0.5 * double(s.data->width) + 0.5);
+            for (std::size_t k = 0; k < points.size(); ++k) {
+                const QPointF a(points[k].x, points[k].y);
+                const QPointF b =
+                    k + 1 < points.size() ? QPointF(points[k + 1].x, points[k + 1].y) : a;
+                const QPointF d = b - a;
+                const double dd = QPointF::dotProduct(d, d);
+                const double t =
+                    dd > 0.0 ? std::clamp(QPointF::dotProduct(p - a, d) / dd, 0.0, 1.0) : 0.0;
+                if (QLineF(p, a + t * d).length() <= reach) {
+                    out.push_back(i);
+                    break;
+                }
+            }
+        }
+        return out;
+    };
+    std::vector<Id> join, leave;
+    for (std::size_t i = 0; i < group.strokes.size(); ++i) {
+        const Stroke &s = group.strokes[i];
+        if (!s.data || qAlpha(s.data->color) != 0)
+            continue;
+        const std::vector<StrokePoint> &points = displayedPoints(group, i);
+        if (points.empty())
+            continue;
+        bool any = false, all = true;
+        for (const StrokePoint *end : {&points.front(), &points.back()})
+            for (std::size_t j : inkedAt(QPointF(end->x, end->y))) {
+                any = true;
+                all = all && isPicked(group.strokes[j].id);
+            }
+        if (!any)
+            continue;
+        (all ? join : leave).push_back(s.id);
+    }
+    std::erase_if(picked,
+                  [&](Id id) { return std::find(leave.begin(), leave.end(), id) != leave.end(); });
+    for (Id id : join)
+        if (!isPicked(id))
+            picked.push_back(id);
+    return picked;
+}
+
+std::vector<std::vector<std::size_t>> linesOfParts(const StrokeGroup &group)
+{
+    const std::size_t n = group.strokes.size();
+    std::vector<std::size_t> root(n);
+    for (std::size_t i = 0; i < n; ++i)
+        root[i] = i;
+    const auto find = [&](std::size_t i) {
+        while (root[i] != i)
+            i = root[i] = root[root[i]];
+        return i;
+    };
+    const auto hidden = [&](std::size_t i) {
+        return group.strokes[i].data && group.strokes[i].data->color == kHiddenLineColor;
+    };
+    const auto sameEnd = [](const StrokePoint &a, const StrokePoint &b) {
+        return a.x == b.x && a.y == b.y;
+    };
+    // A hidden part and the parts either side of it share their ends exactly (bakedStrokes
+    // copies the point), so ends are matched by value.
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!hidden(i) || group.strokes[i].data->points.empty())
+            continue;
+        const auto &pi = group.strokes[i].data->points;
+        for (std::size_t j = 0; j < n; ++j) {
+            if (j == i || !group.strokes[j].data || group.strokes[j].data->points.empty() ||
+                (qAlpha(group.strokes[j].data->color) == 0 && !hidden(j)))
+                continue;
+            const auto &pj = group.strokes[j].data->points;
+            if (sameEnd(pi.front(), pj.back()) || sameEnd(pi.back(), pj.front()))
+                root[find(i)] = find(j);
+        }
+    }
+    std::vector<std::vector<std::size_t>> lines;
+    std::vector<std::ptrdiff_t> lineOf(n, -1);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t r = find(i);
+        if (lineOf[r] < 0) {
+            lineOf[r] = std::ptrdiff_t(lines.size());
+            lines.emplace_back();
+        }
+        lines[std::size_t(lineOf[r])].push_back(i);
+    }
+    return lines;
+}
+
 } // namespace finbook::model

@@ -1,6 +1,7 @@
 #include "stroke_hit.h"
 
 #include <finbook/model/commands.h>
+#include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/picture/picture_object.h>
 #include <finbook/model/render.h>
@@ -332,10 +333,21 @@ void SelectTool::finishLasso(const ToolEvent &event)
     for (const model::StrokeGroup &g : frame->groups) {
         if (!isEditable(g))
             continue;
-        for (std::size_t i = 0; i < g.strokes.size(); ++i)
-            if (!contains(picked, g.strokes[i].id) &&
-                fractionInside(model::displayedPoints(g, i), m_lasso) >= kLassoShare)
-                picked.push_back(g.strokes[i].id);
+        // A line that Apply Pose split into parts is lassoed whole or not at all, as it was
+        // before the pose was applied.
+        for (const std::vector<std::size_t> &line : model::linesOfParts(g)) {
+            std::vector<model::StrokePoint> points;
+            for (std::size_t i : line) {
+                const std::vector<model::StrokePoint> &part = model::displayedPoints(g, i);
+                points.insert(points.end(), part.begin(), part.end());
+            }
+            if (fractionInside(points, m_lasso) >= kLassoShare)
+                for (std::size_t i : line)
+                    if (!contains(picked, g.strokes[i].id))
+                        picked.push_back(g.strokes[i].id);
+        }
+        // Lines of no ink go with the inked lines they join, not with the lasso.
+        picked = model::withLinesOfNoInk(g, std::move(picked));
         // A picture whose mesh lies mostly inside the lasso, as a stroke's points.
         if (g.picture && !contains(pictures, g.id)) {
             const Eigen::MatrixX2d V = model::shownPictureVertices(g);

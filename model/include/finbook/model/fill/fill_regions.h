@@ -84,6 +84,21 @@ using ObjectRegionsPtr = std::shared_ptr<const ObjectRegions>;
 // so that the loop the line closed still inflates as one (rest_shade.h).
 constexpr QRgb kHiddenLineColor = 0x00ffffff;
 
+// The lines of no ink (alpha 0: the hidden parts of lines, kHiddenLineColor, and the lines that
+// close gaps, fill_resolve.h's kGapCloserColor) go with the inked lines they join. Of `picked`
+// (ids of `group`'s strokes, as a lasso picks them), a line of no ink stays picked only if
+// every inked line its ends lie on is picked too, and one not picked joins when all of them
+// are; one whose ends lie on no inked line keeps its pick. So a lasso round a head that a
+// cut-out pose, once applied, laid over the body does not take along the hidden part of the
+// body's outline under it or a line of no ink that closes the body at the neck, which would
+// open the body and lose its fill; a lasso round the whole figure still takes every one.
+std::vector<Id> withLinesOfNoInk(const StrokeGroup &group, std::vector<Id> picked);
+// The lines of `group` as the animator drew them: Apply Pose splits a line that a cut-out piece
+// hid in part into its parts, shown and hidden (kHiddenLineColor), each beginning where the one
+// before ends. Here each part is joined again with the parts that share an end with it across a
+// hidden part; every other stroke is a line of its own. Indices into group.strokes, in order.
+std::vector<std::vector<std::size_t>> linesOfParts(const StrokeGroup &group);
+
 // The gap the document asks for, as geometry::RegionsOptions reads it (< 0 = automatic).
 geometry::RegionsOptions regionsOptions(double closeGap);
 
