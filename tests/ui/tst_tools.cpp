@@ -661,6 +661,22 @@ void TestTools::aHeadLassoedAfterApplyPoseMovesAlone()
              qPrintable(QStringLiteral("the body shows %1, not %2")
                             .arg(moved.pixel(view.map(belly).toPoint()), 0, 16)
                             .arg(bodyColour, 0, 16)));
+    // A lasso round the whole figure takes every line, of ink or not: moved, the figure shows
+    // as it did, moved.
+    m_doc->undoStack()->undo();
+    m_state->setSelectedStrokes({});
+    const QRectF whole = all.adjusted(-20, -20, 20, 20);
+    drag(m_canvas.get(),
+         {m_canvas->mapFromCanvas(whole.topLeft()), m_canvas->mapFromCanvas(whole.topRight()),
+          m_canvas->mapFromCanvas(whole.bottomRight()), m_canvas->mapFromCanvas(whole.bottomLeft()),
+          m_canvas->mapFromCanvas(whole.topLeft() + QPointF(0, 1))});
+    QCOMPARE(m_state->selectedStrokes().size(), g.strokes.size());
+    // (By a whole number of the picture's pixels, so the two pictures' edges match.)
+    const double dx = std::round(30.0 * view.m11()) / view.m11();
+    dragCanvas(m_canvas.get(), belly, belly + QPointF(dx, 0), 5);
+    const QImage shifted = framePicture(*m_doc, 0, QTransform(view).translate(-dx, 0), 480);
+    const PictureAgreement same = comparePictures(before, shifted);
+    QVERIFY2(same.agreePct > 99.5, qPrintable(QString::number(same.agreePct)));
 }
 
 void TestTools::copyPasteIntoAnotherFrame()

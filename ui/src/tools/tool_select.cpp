@@ -1,6 +1,7 @@
 #include "stroke_hit.h"
 
 #include <finbook/model/commands.h>
+#include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/picture/picture_object.h>
@@ -442,6 +443,36 @@ void SelectTool::commitTransform()
     }
     if (!parts.empty())
         doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, parts, data, text));
+    // A fill region all of whose lines moved moves with them: its seed too, so that it is not
+    // left in a neighbouring region that shares a line with it (a whole figure dragged by less
+    // than its width lost a small region's colour to its neighbour).
+    std::vector<model::Id> sorted = parts;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<model::Id> fillGroups;
+    for (model::Id id : parts)
+        if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
+            if (const model::Id gid = doc->frameAt(at).groups[std::size_t(at.group)].id;
+                !contains(fillGroups, gid))
+                fillGroups.push_back(gid);
+    for (model::Id gid : fillGroups) {
+        std::vector<model::Fill> fills = doc->group(gid)->fills;
+        bool changed = false;
+        const auto follow = [&](QPointF &seed, const std::vector<model::Id> &strokes) {
+            if (strokes.empty() || !std::all_of(strokes.begin(), strokes.end(), [&](model::Id s) {
+                    return std::binary_search(sorted.begin(), sorted.end(), s);
+                }))
+                return;
+            seed = m_transform.map(seed);
+            changed = true;
+        };
+        for (model::Fill &fill : fills) {
+            follow(fill.seed, fill.strokes);
+            for (model::FillPlace &place : fill.more)
+                follow(place.seed, place.strokes);
+        }
+        if (changed)
+            doc->undoStack()->push(new model::SetFillsCommand(doc, gid, std::move(fills), text));
+    }
     StrokeEditing::endRestEdit(*state(), groups); // a shown skeleton follows the moved lines
     if (parts != ids)
         state()->setSelection(parts, state()->selectedPictures());
