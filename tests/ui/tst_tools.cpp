@@ -612,7 +612,8 @@ void TestTools::aCutOutPoseMovesAndDeletesWholeLines()
 // The walkthrough of issue 45, drawn in the real window (tests/data/apply_pose_head.finbook):
 // a body, a head and two arms, filled, both arms raised 100° behind the head in a cut-out pose,
 // then Apply Pose. A lasso just round the head used to pick the hidden parts of the lines under
-// it and the lines of no ink beside it, and moving the head emptied the body and the right arm.
+// it and the lines of no ink beside it; moving the head emptied the body and the left arm and
+// took the top of the right arm along.
 void TestTools::aHeadLassoedAfterApplyPoseMovesAlone()
 {
     using namespace finbook::testing;
