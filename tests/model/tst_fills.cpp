@@ -154,6 +154,7 @@ private slots:
     void fillIdNoStrokeCanHaveIsRefusedAndRecovered();
     void aFillOfSeveralRegionsIsOneFill();
     void aFillWhoseOutlineLeftTheFaceYieldsIt();
+    void erasingTheLineBetweenTwoFillsKeepsTheLargersColour();
 };
 
 void TestFills::fillRecolourRemoveEachOneUndoStep()
@@ -632,6 +633,42 @@ void TestFills::aFillWhoseOutlineLeftTheFaceYieldsIt()
     Fill alsoHere = moved;
     alsoHere.strokes = sorted({a, b, d});
     QCOMPARE(faceFills(*regions, {kept, alsoHere})[std::size_t(face)], 1);
+}
+
+// Two regions made one by erasing the line between them: both fills are tied equally to the
+// strokes left, and the merged region shows the larger one's colour, whichever was filled last.
+// Undo brings both back.
+void TestFills::erasingTheLineBetweenTwoFillsKeepsTheLargersColour()
+{
+    for (const bool smallFirst : {false, true}) {
+        Document doc;
+        const Id g = squareDocument(doc, QRectF(100, 100, 200, 100));
+        doc.undoStack()->push(new AddStrokeCommand(
+            &doc, g, polylineStroke(QPolygonF{QPointF(250, 95), QPointF(250, 205)})));
+        const Id divider = doc.group(g)->strokes.back().id;
+        const QPointF big(150, 150), small(275, 150);
+        push(doc, fillRegionCommand(&doc, g, smallFirst ? small : big, smallFirst ? kBlue : kRed));
+        push(doc, fillRegionCommand(&doc, g, smallFirst ? big : small, smallFirst ? kRed : kBlue));
+        QCOMPARE(filledFaces(doc, g), 2);
+        const std::vector<Fill> before = doc.group(g)->fills;
+        doc.undoStack()->push(new RemoveStrokeCommand(&doc, divider));
+        const auto regions = objectRegions(*doc.group(g), doc.settings().closeGap);
+        QCOMPARE(regions->faceCount(), 1);
+        const std::vector<int> owners = faceFills(*regions, doc.group(g)->fills);
+        QVERIFY(owners.at(0) >= 0);
+        QCOMPARE(doc.group(g)->fills.at(std::size_t(owners.at(0))).color, kRed);
+        QCOMPARE(doc.group(g)->fills, before); // the fills themselves did not change
+        doc.undoStack()->undo();
+        QCOMPARE(filledFaces(doc, g), 2);
+        const auto again = objectRegions(*doc.group(g), doc.settings().closeGap);
+        const std::vector<int> two = faceFills(*again, doc.group(g)->fills);
+        for (const QPointF p : {big, small}) {
+            const int face = again->faceAt(p);
+            QVERIFY(face >= 0);
+            QCOMPARE(doc.group(g)->fills.at(std::size_t(two.at(std::size_t(face)))).color,
+                     p == big ? kRed : kBlue);
+        }
+    }
 }
 
 // What a lasso picks after Apply Pose (tool_select): a line of no ink stays picked only when

@@ -29,6 +29,27 @@ bool contains(const std::vector<Id> &sorted, Id id)
     return std::binary_search(sorted.begin(), sorted.end(), id);
 }
 
+// How deep `p` lies in `polygon`: its distance to the nearest ring (outer or hole).
+double depthIn(const geometry::Polygon &polygon, QPointF p)
+{
+    const Eigen::Vector2d q(p.x(), p.y());
+    double best = std::numeric_limits<double>::infinity();
+    const auto ring = [&](const Eigen::MatrixX2d &r) {
+        for (Eigen::Index i = 0; i < r.rows(); ++i) {
+            const Eigen::Vector2d a = r.row(i).transpose();
+            const Eigen::Vector2d b = r.row((i + 1) % r.rows()).transpose();
+            const Eigen::Vector2d d = b - a;
+            const double len2 = d.squaredNorm();
+            const double t = len2 > 0.0 ? std::clamp((q - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+            best = std::min(best, (a + t * d - q).norm());
+        }
+    };
+    ring(polygon.outer);
+    for (const Eigen::MatrixX2d &hole : polygon.holes)
+        ring(hole);
+    return best;
+}
+
 // One region of a fill: its seed and its strokes (the fill's own, or one of Fill::more).
 struct Place {
     const QPointF &seed;
@@ -145,12 +166,27 @@ std::vector<Owner> faceOwners(const ObjectRegions &regions, const std::vector<Fi
             // Lexicographic: the share (0-1) decides only between equal counts.
             const double tie =
                 (either > 0 ? double(common) / double(either) : 1.0) - 2.0 * double(elsewhere);
-            // On a tie the later one wins, except that a fill's further region (made from a
-            // smaller face than its first, fillsAfterBake) never takes a face from another
-            // fill's first region.
+            // On a tie, a fill's further region (made from a smaller face than its first,
+            // fillsAfterBake) never takes a face from another fill's first region, and a first
+            // region always takes it from a further one. Otherwise the seed lying deeper in
+            // the face wins: two regions made one by erasing the line between them (each fill
+            // tied as well to the strokes left) show the colour of the larger, whose seed
+            // (the point furthest inside it) lies deep in the merged face, not the smaller's
+            // near its edge, whichever was filled last. A later one wins an exact tie.
             const Owner &held = out[std::size_t(f)];
-            const bool yields = k >= 0 && held.fill >= 0 && held.place < 0;
-            if (tie > claim[std::size_t(f)] || (tie == claim[std::size_t(f)] && !yields)) {
+            bool takes = tie > claim[std::size_t(f)];
+            if (tie == claim[std::size_t(f)]) {
+                if (held.fill < 0 || (k < 0) != (held.place < 0)) {
+                    takes = held.fill < 0 || k < 0;
+                } else {
+                    const auto &polygon = regions.regions().faces[std::size_t(f)].polygon;
+                    const double mine = depthIn(polygon, place.seed);
+                    const double theirs =
+                        depthIn(polygon, placeOf(fills[std::size_t(held.fill)], held.place).seed);
+                    takes = mine >= theirs;
+                }
+            }
+            if (takes) {
                 claim[std::size_t(f)] = tie;
                 out[std::size_t(f)] = {int(i), k};
             }

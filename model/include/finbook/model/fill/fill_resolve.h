@@ -9,8 +9,10 @@
 // the fill stays in the object, so undoing the edit brings the colour back exactly. Where two
 // fills hold their seeds in one face, the one tied best to its strokes has it: first the one
 // with fewest strokes that now bound other faces instead (its region's outline moved away),
-// then the larger share of strokes in common, a later fill winning a tie (but a fill's further
-// region, Fill::more, never a tie against another fill's first region); the other shows nowhere and
+// then the larger share of strokes in common; on a tie a fill's first region wins against another
+// fill's further one (Fill::more), and otherwise the seed lying deeper in the face (so two
+// regions made one by erasing the line between them show the larger one's colour, whichever was
+// filled last), a later fill winning an exact tie; the other shows nowhere and
 // does not spread (a region that vanished under a moved head must not colour the body it left its
 // seed in). A fill of several regions (Fill::more) resolves each region so, as if each were
 // a fill of its own that comes right after the fill's first.
