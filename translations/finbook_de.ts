@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="206"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="216"/>
         <source>The first key has no lines to carry.</source>
         <translation>Das erste Schlüsselbild hat keine Linien, die sich übertragen lassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="99"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="218"/>
         <source>The second key has no lines to fit to.</source>
         <translation>Das zweite Schlüsselbild hat keine Linien, an die sich anpassen ließe.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="213"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="223"/>
         <source>The first key could not be meshed: %1</source>
         <translation>Das erste Schlüsselbild ließ sich nicht vernetzen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="245"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="259"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>Die Linien des ersten Schlüsselbilds sind Punkte: Es gibt nichts anzupassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="257"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="271"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>Das Netz des ersten Schlüsselbilds lässt sich nicht anpassen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="78"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>Die Linien des ersten Schlüsselbilds um (%1, %2), %3 × %4 px, finden im zweiten nichts Ähnliches.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="87"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>Die beiden Zeichnungen sind zu verschieden, um eine auf die andere anzupassen (im Median %1 % der Zeichnung entfernt, %2 % gedehnt).%3 Zeichnen Sie ein Schlüsselbild dazwischen oder das zweite näher am ersten.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>Ein Zuordnungspin liegt nicht auf der Zeichnung des ersten Schlüsselbilds.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="101"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
         <source>The fit could not be solved.</source>
         <translation>Die Anpassung ließ sich nicht lösen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="116"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>Die angepasste Bewegung lässt sich nicht interpolieren: %1</translation>
     </message>
@@ -234,7 +234,7 @@
         <translation>Pose zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="183"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="220"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung anwenden</translation>
@@ -571,6 +571,11 @@
         <location filename="../model/src/picture/picture_commands.cpp" line="18"/>
         <source>Import Picture</source>
         <translation>Bild importieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/uncovered_lines.cpp" line="279"/>
+        <source>Show Lines</source>
+        <translation>Linien zeigen</translation>
     </message>
 </context>
 <context>
@@ -2956,7 +2961,6 @@
     </message>
     <message>
         <location filename="../model/src/picture/picture_object.cpp" line="288"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="303"/>
         <source>The object has no picture.</source>
         <translation>Das Objekt hat kein Bild.</translation>
     </message>
@@ -3263,53 +3267,53 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="124"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="127"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="129"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="130"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="151"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="152"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="190"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="191"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (Pose angewendet)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="288"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="288"/>
         <source>Delete Picture</source>
         <translation>Bild löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="387"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="410"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="463"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="486"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="473"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="474"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="496"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="497"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -4155,7 +4159,7 @@
         <translation>Teile von Linien oder ganze Striche wegradieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eraser.cpp" line="158"/>
+        <location filename="../ui/src/tools/tool_eraser.cpp" line="160"/>
         <source>Erase</source>
         <translation>Radieren</translation>
     </message>
@@ -6586,42 +6590,42 @@
         <translation>Linien mit dem Lasso wählen, dann verschieben, drehen oder skalieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="387"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="400"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>So weit lassen sich die Striche nicht umformen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="409"/>
         <source>Move Strokes</source>
         <translation>Striche verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="409"/>
         <source>Move Picture</source>
         <translation>Bild verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="410"/>
         <source>Rotate Strokes</source>
         <translation>Striche drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="410"/>
         <source>Rotate Picture</source>
         <translation>Bild drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="411"/>
         <source>Scale Strokes</source>
         <translation>Striche skalieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="411"/>
         <source>Scale Picture</source>
         <translation>Bild skalieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="405"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="418"/>
         <source>The picture cannot be transformed that far.</source>
         <translation>So weit lässt sich das Bild nicht umformen.</translation>
     </message>

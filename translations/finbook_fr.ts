@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="206"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="216"/>
         <source>The first key has no lines to carry.</source>
         <translation>La première clé n’a aucune ligne à transporter.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="99"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="218"/>
         <source>The second key has no lines to fit to.</source>
         <translation>La seconde clé n’a aucune ligne sur laquelle ajuster.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="213"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="223"/>
         <source>The first key could not be meshed: %1</source>
         <translation>La première clé n’a pas pu être maillée : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="245"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="259"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>Les lignes de la première clé sont des points : il n’y a rien à ajuster.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="257"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="271"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>Le maillage de la première clé ne peut pas être ajusté : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="78"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>Les lignes de la première clé autour de (%1, %2), %3 × %4 px, ne trouvent rien de semblable dans la seconde.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="87"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>Les deux dessins sont trop différents pour ajuster l’un sur l’autre (à %1 % du dessin en médiane, étiré de %2 %).%3 Dessinez une clé entre les deux, ou la seconde plus proche de la première.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>Une épingle de correspondance n’est pas sur le dessin de la première clé.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="101"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
         <source>The fit could not be solved.</source>
         <translation>L’ajustement n’a pas pu être résolu.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="116"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>Le mouvement ajusté ne peut pas être interpolé : %1</translation>
     </message>
@@ -234,7 +234,7 @@
         <translation>Réinitialiser la pose</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="183"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="220"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Appliquer la pose au dessin</translation>
@@ -571,6 +571,11 @@
         <location filename="../model/src/picture/picture_commands.cpp" line="18"/>
         <source>Import Picture</source>
         <translation>Importer une image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/uncovered_lines.cpp" line="279"/>
+        <source>Show Lines</source>
+        <translation>Afficher les traits</translation>
     </message>
 </context>
 <context>
@@ -2956,7 +2961,6 @@
     </message>
     <message>
         <location filename="../model/src/picture/picture_object.cpp" line="288"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="303"/>
         <source>The object has no picture.</source>
         <translation>L’objet n’a pas d’image.</translation>
     </message>
@@ -3263,53 +3267,53 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="124"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="127"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="129"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="130"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="151"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="152"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="190"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="191"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (pose appliquée)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="288"/>
         <source>Delete Strokes</source>
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="288"/>
         <source>Delete Picture</source>
         <translation>Supprimer l’image</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="387"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="410"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="463"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="486"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="473"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="474"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="496"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="497"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -4155,7 +4159,7 @@
         <translation>gommer des parties de traits, ou des traits entiers</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eraser.cpp" line="158"/>
+        <location filename="../ui/src/tools/tool_eraser.cpp" line="160"/>
         <source>Erase</source>
         <translation>Effacer</translation>
     </message>
@@ -6586,42 +6590,42 @@
         <translation>entourer des traits au lasso, puis les déplacer, les tourner ou les mettre à l&apos;échelle</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="387"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="400"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>Les traits ne peuvent pas être transformés à ce point.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="409"/>
         <source>Move Strokes</source>
         <translation>Déplacer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="409"/>
         <source>Move Picture</source>
         <translation>Déplacer l’image</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="410"/>
         <source>Rotate Strokes</source>
         <translation>Faire pivoter les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="410"/>
         <source>Rotate Picture</source>
         <translation>Faire pivoter l’image</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="411"/>
         <source>Scale Strokes</source>
         <translation>Redimensionner les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="411"/>
         <source>Scale Picture</source>
         <translation>Redimensionner l’image</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="405"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="418"/>
         <source>The picture cannot be transformed that far.</source>
         <translation>L’image ne peut pas être transformée à ce point.</translation>
     </message>

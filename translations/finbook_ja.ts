@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="206"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="216"/>
         <source>The first key has no lines to carry.</source>
         <translation>最初のキーには運ぶ線がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="99"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="218"/>
         <source>The second key has no lines to fit to.</source>
         <translation>二番目のキーには合わせる線がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="213"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="223"/>
         <source>The first key could not be meshed: %1</source>
         <translation>最初のキーをメッシュにできませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="245"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="259"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>最初のキーの線は点だけです。合わせるものがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="257"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="271"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>最初のキーのメッシュを合わせられません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="78"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>最初のキーの (%1, %2) 付近、%3 × %4 px の線に似たものが二番目のキーにありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="87"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>二つの絵が違いすぎて、一方を他方に合わせられません (中央値で絵の %1 % 離れ、%2 % 伸びています)。%3 間にキーを描くか、二番目を最初に近づけて描いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>対応ピンが最初のキーの絵の上にありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="101"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
         <source>The fit could not be solved.</source>
         <translation>合わせ込みを解けませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="116"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>合わせた動きを補間できません: %1</translation>
     </message>
@@ -234,7 +234,7 @@
         <translation>ポーズをリセット</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="183"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="220"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>ポーズを絵に適用</translation>
@@ -571,6 +571,11 @@
         <location filename="../model/src/picture/picture_commands.cpp" line="18"/>
         <source>Import Picture</source>
         <translation>画像を読み込む</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/uncovered_lines.cpp" line="279"/>
+        <source>Show Lines</source>
+        <translation>線を表示</translation>
     </message>
 </context>
 <context>
@@ -2946,7 +2951,6 @@
     </message>
     <message>
         <location filename="../model/src/picture/picture_object.cpp" line="288"/>
-        <location filename="../model/src/picture/picture_object.cpp" line="303"/>
         <source>The object has no picture.</source>
         <translation>オブジェクトに画像がありません。</translation>
     </message>
@@ -3252,53 +3256,53 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="124"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="127"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="129"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="130"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="151"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="152"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="190"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="191"/>
         <source>%1 (pose applied)</source>
         <translation>%1（ポーズ適用済み）</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="288"/>
         <source>Delete Strokes</source>
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="268"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="288"/>
         <source>Delete Picture</source>
         <translation>画像を削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="387"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="410"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="463"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="486"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="473"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="474"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="496"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="497"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -4141,7 +4145,7 @@
         <translation>線の一部、または線ごと消す</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eraser.cpp" line="158"/>
+        <location filename="../ui/src/tools/tool_eraser.cpp" line="160"/>
         <source>Erase</source>
         <translation>消去</translation>
     </message>
@@ -6563,42 +6567,42 @@
         <translation>投げ縄で線を選び、動かす・回す・拡大縮小する</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="387"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="400"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>ストロークをそこまで変形することはできません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="409"/>
         <source>Move Strokes</source>
         <translation>ストロークを移動</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="396"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="409"/>
         <source>Move Picture</source>
         <translation>画像を移動</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="410"/>
         <source>Rotate Strokes</source>
         <translation>ストロークを回転</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="397"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="410"/>
         <source>Rotate Picture</source>
         <translation>画像を回転</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="411"/>
         <source>Scale Strokes</source>
         <translation>ストロークを拡大・縮小</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="398"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="411"/>
         <source>Scale Picture</source>
         <translation>画像を拡大縮小</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="405"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="418"/>
         <source>The picture cannot be transformed that far.</source>
         <translation>画像をそこまで変形することはできません。</translation>
     </message>

@@ -5,6 +5,7 @@
 
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/fill/fill_regions.h>
+#include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/picture/picture_object.h>
@@ -57,12 +58,49 @@ private slots:
     void deleteSelection();
     void aCutOutPoseMovesAndDeletesWholeLines();
     void aHeadLassoedAfterApplyPoseMovesAlone();
+    void aHeadMovedOffTheArmsShowsTheirTops();
     void copyPasteIntoAnotherFrame();
     void selectAllSkipsLockedObjects();
     void clipboardRefusesMalformedData();
     void handToolPans();
 
 private:
+    // tests/data/apply_pose_head.finbook (a figure drawn in the app, Apply Pose made with both
+    // arms raised behind the head): the head (the inked line highest up) and its box.
+    std::pair<std::size_t, QRectF> openApplyPoseHead()
+    {
+        if (model::openFinbook(
+                *m_doc, QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/apply_pose_head.finbook")))
+            return {};
+        m_state->setCurrentFrameIndex(0);
+        if (m_doc->frameAt(0).groups.empty() || m_doc->frameAt(0).groups.front().rig.isPosed())
+            return {};
+        const model::StrokeGroup &g = m_doc->frameAt(0).groups.front();
+        std::size_t head = 0;
+        float top = 1e9f;
+        for (std::size_t i = 0; i < g.strokes.size(); ++i)
+            if (qAlpha(g.strokes[i].data->color) != 0)
+                for (const model::StrokePoint &p : g.strokes[i].data->points)
+                    if (p.y < top)
+                        top = p.y, head = i;
+        QRectF box;
+        for (const model::StrokePoint &p : g.strokes[head].data->points)
+            box |= QRectF(QPointF(p.x, p.y), QSizeF(0.01, 0.01));
+        return {head, box};
+    }
+    // A lasso of the Select tool round `box`, a tenth wider than it.
+    void lassoRound(const QRectF &box)
+    {
+        m_canvas->setCurrentTool(QStringLiteral("tool.select"));
+        std::vector<QPointF> lasso;
+        for (int k = 0; k <= 24; ++k) {
+            const double a = 2 * M_PI * k / 24;
+            lasso.push_back(
+                m_canvas->mapFromCanvas(box.center() + QPointF(0.55 * box.width() * std::cos(a),
+                                                               0.55 * box.height() * std::sin(a))));
+        }
+        drag(m_canvas.get(), lasso);
+    }
     model::Id group(int frame, int index = 0) const
     {
         return m_doc->frameAt(frame).groups[std::size_t(index)].id;
@@ -617,23 +655,9 @@ void TestTools::aCutOutPoseMovesAndDeletesWholeLines()
 void TestTools::aHeadLassoedAfterApplyPoseMovesAlone()
 {
     using namespace finbook::testing;
-    QVERIFY(!model::openFinbook(
-        *m_doc, QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/apply_pose_head.finbook")));
-    m_state->setCurrentFrameIndex(0);
-    QVERIFY(!m_doc->frameAt(0).groups.empty());
+    const auto [head, box] = openApplyPoseHead();
+    QVERIFY(!box.isEmpty());
     const model::StrokeGroup &g = m_doc->frameAt(0).groups.front();
-    QVERIFY(!g.rig.isPosed());
-    // The head: the inked line highest up.
-    std::size_t head = 0;
-    float top = 1e9f;
-    for (std::size_t i = 0; i < g.strokes.size(); ++i)
-        if (qAlpha(g.strokes[i].data->color) != 0)
-            for (const model::StrokePoint &p : g.strokes[i].data->points)
-                if (p.y < top)
-                    top = p.y, head = i;
-    QRectF box;
-    for (const model::StrokePoint &p : g.strokes[head].data->points)
-        box |= QRectF(QPointF(p.x, p.y), QSizeF(0.01, 0.01));
     const QTransform view = pictureView(shownBounds(g).adjusted(-40, -40, 40, 40), 480);
     const QImage before = framePicture(*m_doc, 0, view, 480);
     // The body below the arms, and the right arm half way up (the rightmost filled pixels of
@@ -641,16 +665,7 @@ void TestTools::aHeadLassoedAfterApplyPoseMovesAlone()
     const QRectF all = shownBounds(g);
     const QPointF belly(all.center().x(), all.bottom() - 0.25 * all.height());
     const QRgb bodyColour = before.pixel(view.map(belly).toPoint());
-    // A lasso round the head, a tenth wider than it.
-    m_canvas->setCurrentTool(QStringLiteral("tool.select"));
-    std::vector<QPointF> lasso;
-    for (int k = 0; k <= 24; ++k) {
-        const double a = 2 * M_PI * k / 24;
-        lasso.push_back(
-            m_canvas->mapFromCanvas(box.center() + QPointF(0.55 * box.width() * std::cos(a),
-                                                           0.55 * box.height() * std::sin(a))));
-    }
-    drag(m_canvas.get(), lasso);
+    lassoRound(box);
     const std::vector<model::Id> picked = m_state->selectedStrokes();
     QVERIFY(std::find(picked.begin(), picked.end(), g.strokes[head].id) != picked.end());
     for (model::Id id : picked)
@@ -678,6 +693,95 @@ void TestTools::aHeadLassoedAfterApplyPoseMovesAlone()
     const QImage shifted = framePicture(*m_doc, 0, QTransform(view).translate(-dx, 0), 480);
     const PictureAgreement same = comparePictures(before, shifted);
     QVERIFY2(same.agreePct > 99.5, qPrintable(QString::number(same.agreePct)));
+}
+
+// After Apply Pose, the arms raised behind the head are cut at its outline, their tops kept
+// hidden. Moved off (or deleted), the head no longer covers them: the tops show again
+// (uncovered_lines.h) and the arms keep their fills; the rest of the figure is as it was.
+void TestTools::aHeadMovedOffTheArmsShowsTheirTops()
+{
+    using namespace finbook::testing;
+    const auto [head, box] = openApplyPoseHead();
+    QVERIFY(!box.isEmpty());
+    const model::StrokeGroup &g = m_doc->frameAt(0).groups.front();
+    const std::vector<model::Stroke> strokes = g.strokes;
+    const std::vector<model::Fill> fills = g.fills;
+    const auto fillsShown = [&] {
+        const auto regions = model::objectRegions(g, m_doc->settings().closeGap);
+        std::vector<int> owners = model::faceFills(*regions, g.fills);
+        std::sort(owners.begin(), owners.end());
+        owners.erase(std::unique(owners.begin(), owners.end()), owners.end());
+        owners.erase(std::remove(owners.begin(), owners.end(), -1), owners.end());
+        return owners;
+    };
+    const std::vector<int> shownBefore = fillsShown();
+    QVERIFY(shownBefore.size() >= 4);           // body, head, both arms
+    std::vector<int> withoutHead = shownBefore; // once the head is deleted
+    {
+        const auto regions = model::objectRegions(g, m_doc->settings().closeGap);
+        const int face = regions->faceAt(box.center());
+        QVERIFY(face >= 0);
+        const int headFill = model::faceFills(*regions, g.fills).at(std::size_t(face));
+        QVERIFY(headFill >= 0);
+        withoutHead.erase(std::find(withoutHead.begin(), withoutHead.end(), headFill));
+    }
+    const QRectF all = shownBounds(g);
+    const QTransform view = pictureView(all.adjusted(-40, -40, 3 * box.width(), 40), 480);
+    const QImage before = framePicture(*m_doc, 0, view, 480);
+    const auto hiddenLength = [](const std::vector<model::Stroke> &lines) { // canvas px
+        double length = 0.0;
+        for (const model::Stroke &s : lines)
+            if (s.data->color == model::kHiddenLineColor)
+                for (std::size_t i = 0; i + 1 < s.data->points.size(); ++i)
+                    length += std::hypot(s.data->points[i + 1].x - s.data->points[i].x,
+                                         s.data->points[i + 1].y - s.data->points[i].y);
+        return length;
+    };
+    const double hiddenBefore = hiddenLength(strokes);
+    const QPointF by(2.2 * box.width(), 0);
+    enum class Edit { Move, Delete, Erase };
+    for (const Edit edit : {Edit::Move, Edit::Delete, Edit::Erase}) {
+        const bool deleteIt = edit != Edit::Move;
+        if (edit == Edit::Erase) { // a rub across the top of the head's outline
+            m_canvas->setCurrentTool(QStringLiteral("tool.eraser"));
+            dragCanvas(m_canvas.get(), QPointF(box.center().x() - 4, box.top()),
+                       QPointF(box.center().x() + 4, box.top()), 2);
+        } else {
+            lassoRound(box);
+            if (deleteIt)
+                QVERIFY(ui::StrokeEditing::deleteSelection(*m_state));
+            else
+                dragCanvas(m_canvas.get(), box.center(), box.center() + by, 5);
+        }
+        QVERIFY(std::none_of(g.strokes.begin(), g.strokes.end(), [&](const model::Stroke &s) {
+            return deleteIt && s.id == strokes[head].id;
+        }));
+        QCOMPARE(fillsShown(), deleteIt ? withoutHead : shownBefore);
+        // The arms' tops: two lines at least the head's width long in all.
+        QVERIFY2(hiddenLength(g.strokes) < hiddenBefore - box.width(),
+                 qPrintable(QStringLiteral("%1 of %2 px hidden")
+                                .arg(hiddenLength(g.strokes))
+                                .arg(hiddenBefore)));
+        // Away from where the head was and is, the figure shows as it did.
+        const QImage after = framePicture(*m_doc, 0, view, 480);
+        const QRect was = view.mapRect(box.adjusted(-4, -4, 4, 4)).toAlignedRect();
+        const QRect now = view.mapRect(box.translated(by).adjusted(-4, -4, 4, 4)).toAlignedRect();
+        long long compared = 0, differ = 0;
+        for (int y = 0; y < before.height(); ++y)
+            for (int x = 0; x < before.width(); ++x)
+                if (!was.contains(x, y) && !now.contains(x, y) &&
+                    before.pixel(x, y) != qRgb(255, 255, 255)) {
+                    ++compared;
+                    differ += !sameColour(before.pixel(x, y), after.pixel(x, y));
+                }
+        QVERIFY(compared > 1000);
+        QVERIFY2(differ * 200 <= compared,
+                 qPrintable(QStringLiteral("%1 of %2 px changed").arg(differ).arg(compared)));
+        m_doc->undoStack()->undo();
+        QCOMPARE(g.strokes, strokes);
+        QCOMPARE(g.fills, fills);
+        m_state->setSelectedStrokes({});
+    }
 }
 
 void TestTools::copyPasteIntoAnotherFrame()

@@ -199,7 +199,10 @@ void ObjectActions::moveSelectionTo(model::Id targetGroupId)
     groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
     const QString text = tr("Move Strokes to Object");
     StrokeEditing::beginRestEdit(doc, text, groups);
+    const std::vector<model::StrokeGroup> before = StrokeEditing::objectsNow(doc, groups);
     doc->undoStack()->push(new model::MoveStrokesCommand(doc, std::move(strokes), targetGroupId));
+    // A head moved to an object of its own shows the arms' tops that Apply Pose hid behind it.
+    StrokeEditing::showUncoveredLines(doc, before);
     StrokeEditing::endRestEdit(*m_state, groups);
     m_state->setCurrentGroupId(targetGroupId);
 }

@@ -2,6 +2,7 @@
 
 #include <finbook/model/commands.h>
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/uncovered_lines.h>
 #include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/picture/picture_object.h>
 #include <finbook/model/pins/pin_commands.h>
@@ -247,6 +248,25 @@ std::vector<model::Id> StrokeEditing::beginRestEditOf(model::Document *doc, cons
     return out;
 }
 
+std::vector<model::StrokeGroup> StrokeEditing::objectsNow(const model::Document *doc,
+                                                          const std::vector<model::Id> &groupIds)
+{
+    std::vector<model::StrokeGroup> out;
+    for (model::Id id : groupIds)
+        if (const model::StrokeGroup *g = doc->group(id);
+            g && std::none_of(out.begin(), out.end(),
+                              [id](const model::StrokeGroup &o) { return o.id == id; }))
+            out.push_back(*g);
+    return out;
+}
+
+void StrokeEditing::showUncoveredLines(model::Document *doc,
+                                       const std::vector<model::StrokeGroup> &before)
+{
+    for (const model::StrokeGroup &g : before)
+        model::pushUncoveredParts(doc, g.id, g);
+}
+
 void StrokeEditing::endRestEdit(EditorState &state, const std::vector<model::Id> &following)
 {
     followDrawing(state, following);
@@ -266,8 +286,11 @@ bool StrokeEditing::deleteSelection(EditorState &state)
             groups.push_back(doc->frameAt(at).groups[std::size_t(at.group)].id);
     const std::vector<model::Id> following = skeletonsFollowing(state, groups);
     const QString text = ids.empty() ? tr("Delete Picture") : tr("Delete Strokes");
-    for (model::Id id : beginRestEditOf(doc, text, ids))
+    const std::vector<model::Id> doomed = beginRestEditOf(doc, text, ids);
+    const std::vector<model::StrokeGroup> before = objectsNow(doc, groups);
+    for (model::Id id : doomed)
         doc->undoStack()->push(new model::RemoveStrokeCommand(doc, id));
+    showUncoveredLines(doc, before); // a head deleted shows the arms' tops behind it
     // A picture object goes with its picture, unless lines drawn on it stay.
     for (model::Id id : pictures)
         if (const model::StrokeGroup *g = doc->group(id); g && g->picture && isEditable(*g)) {

@@ -128,6 +128,8 @@ void EraserTool::finish()
             std::find(m_following.begin(), m_following.end(), id) == m_following.end())
             doc->undoStack()->push(new model::RemoveRigCommand(doc, id));
     m_erasedFrom.clear();
+    // A head rubbed out shows the arms' tops that Apply Pose hid behind it.
+    StrokeEditing::showUncoveredLines(doc, std::exchange(m_before, {}));
     StrokeEditing::endRestEdit(*state(), std::exchange(m_following, {}));
 }
 
@@ -172,7 +174,12 @@ bool EraserTool::openMacro(const std::vector<model::Id> &strokes)
         }
     // Erasing from a posed object makes its pose the drawing first, so what is left stays
     // where it is shown.
-    return StrokeEditing::applyPoses(doc, groups);
+    const bool applied = StrokeEditing::applyPoses(doc, groups);
+    for (const model::StrokeGroup &g : StrokeEditing::objectsNow(doc, groups))
+        if (std::none_of(m_before.begin(), m_before.end(),
+                         [&](const model::StrokeGroup &b) { return b.id == g.id; }))
+            m_before.push_back(g);
+    return applied;
 }
 
 void EraserTool::eraseAlong(const QPointF &from, const QPointF &to)

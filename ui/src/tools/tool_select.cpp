@@ -441,6 +441,11 @@ void SelectTool::commitTransform()
             data.push_back(moved ? std::move(moved) : std::make_shared<model::StrokeData>(part));
         }
     }
+    std::vector<model::Id> partGroups;
+    for (model::Id id : parts)
+        if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
+            partGroups.push_back(doc->frameAt(at).groups[std::size_t(at.group)].id);
+    const std::vector<model::StrokeGroup> before = StrokeEditing::objectsNow(doc, partGroups);
     if (!parts.empty())
         doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, parts, data, text));
     // A fill region all of whose lines moved moves with them: its seed too, so that it is not
@@ -473,6 +478,9 @@ void SelectTool::commitTransform()
         if (changed)
             doc->undoStack()->push(new model::SetFillsCommand(doc, gid, std::move(fills), text));
     }
+    // A head moved off an arm raised behind it (Apply Pose hid the arm's top under the head)
+    // shows the arm's top, and the arm keeps its fill.
+    StrokeEditing::showUncoveredLines(doc, before);
     StrokeEditing::endRestEdit(*state(), groups); // a shown skeleton follows the moved lines
     if (parts != ids)
         state()->setSelection(parts, state()->selectedPictures());

@@ -72,6 +72,16 @@ public:
     // stroke comes back with its parts (the new strokes that continue it end to end).
     static std::vector<model::Id> beginRestEditOf(model::Document *doc, const QString &text,
                                                   const std::vector<model::Id> &ids);
+    // The objects `groupIds` as they are now (inside a rest edit, after their poses were
+    // applied), for showUncoveredLines() once the edit is made.
+    static std::vector<model::StrokeGroup> objectsNow(const model::Document *doc,
+                                                      const std::vector<model::Id> &groupIds);
+    // Inks again the hidden parts of lines (Apply Pose's, under a cut-out piece) that the edit
+    // took the cover off since `before` (objectsNow's): a head moved off an arm raised behind
+    // it shows the arm's top, and the arm keeps its fill (model/fill/uncovered_lines.h). Call
+    // inside the edit's macro.
+    static void showUncoveredLines(model::Document *doc,
+                                   const std::vector<model::StrokeGroup> &before);
     // Closes a rest edit's macro after letting the skeletons of `following` (from
     // skeletonsFollowing() before the edit, skeleton/skeleton_follow.h) follow the new
     // drawing, so the stroke edit and the skeleton are one undo step.

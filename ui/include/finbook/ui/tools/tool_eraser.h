@@ -67,6 +67,8 @@ private:
     bool m_macroOpen = false;
     std::vector<model::Id> m_erasedFrom; // objects the open macro erased from
     std::vector<model::Id> m_following;  // those whose skeleton follows (skeleton_follow.h)
+    // Those objects as the rub first reached them (poses applied), for the lines it uncovers.
+    std::vector<model::StrokeGroup> m_before;
     QPointF m_last;
     QPointF m_cursor;
     bool m_cursorShown = false;

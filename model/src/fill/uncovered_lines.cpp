@@ -1,0 +1,286 @@
+// The hidden parts of lines that an edit uncovers (uncovered_lines.h).
+#include "../command_text.h"
+
+#include <finbook/model/commands.h>
+#include <finbook/model/document.h>
+#include <finbook/model/erase/stroke_cut.h>
+#include <finbook/model/fill/fill_regions.h>
+#include <finbook/model/fill/fill_render.h>
+#include <finbook/model/fill/fill_resolve.h>
+#include <finbook/model/fill/uncovered_lines.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace finbook::model {
+
+namespace {
+
+// Samples along a hidden part: at most this far apart (canvas px), so that a long straight
+// segment half under a fill is seen in its middle too.
+constexpr double kUncoverStep = 2.0;
+// A run shorter than this many pen widths takes the state of the runs beside it: the ends of a
+// hidden part lie on the outline that covered it, where inside and outside are a rounding apart.
+constexpr double kShortestUncoveredRun = 2.0;
+// The most samples one part is given (a part crossing a whole canvas at kUncoverStep).
+constexpr int kMostUncoverSamples = 8192;
+
+// A place along a polyline: segment k, t in [0, 1].
+struct RunPlace {
+    std::size_t segment = 0;
+    double t = 0.0;
+};
+
+StrokePoint pointOfRun(const std::vector<StrokePoint> &points, const RunPlace &at)
+{
+    const StrokePoint &a = points[at.segment];
+    if (at.t == 0.0 || at.segment + 1 >= points.size())
+        return a;
+    const StrokePoint &b = points[at.segment + 1];
+    if (at.t == 1.0)
+        return b;
+    const float t = float(at.t);
+    return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y),
+            a.pressure + t * (b.pressure - a.pressure)};
+}
+
+std::vector<RunPlace> runSamples(const std::vector<StrokePoint> &points)
+{
+    std::vector<RunPlace> out;
+    for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+        const double length = std::hypot(double(points[k + 1].x) - double(points[k].x),
+                                         double(points[k + 1].y) - double(points[k].y));
+        const int n = std::clamp(int(std::ceil(length / kUncoverStep)), 1, kMostUncoverSamples);
+        for (int j = 0; j < n; ++j)
+            out.push_back({k, double(j) / double(n)});
+        if (out.size() > std::size_t(kMostUncoverSamples))
+            return {};
+    }
+    out.push_back({points.size() - 1, 0.0});
+    return out;
+}
+
+// The fills of `group` as shown, for "is this place of a line covered".
+struct FillCover {
+    std::vector<QPainterPath> paths;
+    std::vector<QRectF> boxes;
+    // Of the fills whose `only` is true (all when `only` is empty).
+    FillCover(const StrokeGroup &group, double closeGap, const std::vector<char> &only = {})
+    {
+        for (FillItem &item : fillList(group, closeGap)) {
+            if (!only.empty() && (item.fill < 0 || std::size_t(item.fill) >= only.size() ||
+                                  !only[std::size_t(item.fill)]))
+                continue;
+            boxes.push_back(item.path.boundingRect());
+            paths.push_back(std::move(item.path));
+        }
+    }
+    bool covers(QPointF q) const
+    {
+        for (std::size_t i = 0; i < paths.size(); ++i)
+            if (boxes[i].contains(q) && paths[i].contains(q))
+                return true;
+        return false;
+    }
+    // Whether fills cover the line at `at` on both sides, a pen width off it: a line inked
+    // again bounds the regions beside it, so the line itself lies on their edges, but it is
+    // covered only where a fill lies over it, on either side.
+    bool covers(const std::vector<StrokePoint> &points, const RunPlace &at, double width) const
+    {
+        const std::size_t k = std::min(at.segment, points.size() - 2);
+        const StrokePoint p = pointOfRun(points, at);
+        const double dx = double(points[k + 1].x) - double(points[k].x);
+        const double dy = double(points[k + 1].y) - double(points[k].y);
+        const double length = std::hypot(dx, dy);
+        if (!(length > 0.0))
+            return covers(QPointF(p.x, p.y));
+        const double off = std::max(width, 1.0) / length;
+        const QPointF n(-dy * off, dx * off);
+        return covers(QPointF(p.x, p.y) + n) && covers(QPointF(p.x, p.y) - n);
+    }
+};
+
+bool isHiddenPart(const Stroke &s)
+{
+    return s.data && s.data->color == kHiddenLineColor && s.data->points.size() >= 2;
+}
+
+// A hidden part of `after` that may be uncovered: its samples, and which of them a fill covered
+// before the edit.
+struct HiddenCandidate {
+    std::size_t index = 0; // into after.strokes
+    std::vector<RunPlace> places;
+    std::vector<char> uncovered; // the runs to ink, smoothed
+    QRgb ink = 0xff000000;
+};
+
+// Runs shorter than kShortestUncoveredRun pen widths take the state of the runs beside them.
+void smoothRuns(std::vector<char> &state, const std::vector<StrokePoint> &points,
+                const std::vector<RunPlace> &places, double width)
+{
+    const double shortest = kShortestUncoveredRun * std::max(width, 0.5);
+    for (int pass = 0; pass < 2; ++pass) {
+        struct Run {
+            std::size_t from, to; // samples [from, to]
+            double length;
+        };
+        std::vector<Run> runs;
+        for (std::size_t i = 0; i < state.size();) {
+            std::size_t j = i;
+            double length = 0.0;
+            while (j + 1 < state.size() && state[j + 1] == state[i]) {
+                const StrokePoint a = pointOfRun(points, places[j]),
+                                  b = pointOfRun(points, places[j + 1]);
+                length += std::hypot(double(b.x) - double(a.x), double(b.y) - double(a.y));
+                ++j;
+            }
+            runs.push_back({i, j, length});
+            i = j + 1;
+        }
+        if (runs.size() < 2)
+            return;
+        bool changed = false;
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            if (runs[r].length >= shortest)
+                continue;
+            const bool before = r > 0, after = r + 1 < runs.size();
+            const char to = before ? state[runs[r - 1].from] : state[runs[r + 1].from];
+            if (before && after && state[runs[r - 1].from] != state[runs[r + 1].from])
+                continue; // between two states: it stays as it is
+            // A short run at an end of the part is inked only if it is (the part's end lies on
+            // the outline that hid it, and a run inked past it would poke into the next fill).
+            if ((!before || !after) && to)
+                continue;
+            for (std::size_t i = runs[r].from; i <= runs[r].to; ++i)
+                state[i] = to;
+            changed = true;
+        }
+        if (!changed)
+            return;
+    }
+}
+
+// The pieces of a part: its uncovered runs inked, the rest hidden, each beginning where the
+// one before ends.
+std::vector<StrokeDataPtr> piecesOfPart(const StrokeData &part, const HiddenCandidate &c)
+{
+    std::vector<StrokeDataPtr> out;
+    std::size_t i = 0;
+    while (i < c.places.size()) {
+        std::size_t j = i;
+        while (j + 1 < c.places.size() && c.uncovered[j + 1] == c.uncovered[i])
+            ++j;
+        // The piece runs from sample i to the first sample of the next run (shared end).
+        const std::size_t last = std::min(j + 1, c.places.size() - 1);
+        auto piece = std::make_shared<StrokeData>(part);
+        piece->points.clear();
+        piece->color = c.uncovered[i] ? c.ink : kHiddenLineColor;
+        for (std::size_t k = i; k <= last; ++k)
+            piece->points.push_back(pointOfRun(part.points, c.places[k]));
+        if (piece->points.size() >= 2)
+            out.push_back(std::move(piece));
+        i = j + 1;
+    }
+    return out;
+}
+
+bool anyRunUncovered(const HiddenCandidate &c)
+{
+    return std::any_of(c.uncovered.begin(), c.uncovered.end(), [](char u) { return u != 0; });
+}
+
+} // namespace
+
+std::vector<UncoveredPart> uncoveredParts(const StrokeGroup &before, const StrokeGroup &after,
+                                          double closeGap)
+{
+    if (before.fills.empty() || (after.isDeformed() && after.rig.isPosed()) ||
+        (before.isDeformed() && before.rig.isPosed()))
+        return {};
+    std::unordered_map<Id, const Stroke *> was;
+    for (const Stroke &s : before.strokes)
+        if (isHiddenPart(s))
+            was[s.id] = &s;
+    if (was.empty())
+        return {};
+    // The inked colour of each line of parts.
+    std::vector<QRgb> inkOf(after.strokes.size(), 0xff000000);
+    for (const std::vector<std::size_t> &line : linesOfParts(after)) {
+        QRgb ink = 0xff000000;
+        for (std::size_t i : line)
+            if (after.strokes[i].data && qAlpha(after.strokes[i].data->color) != 0) {
+                ink = after.strokes[i].data->color;
+                break;
+            }
+        for (std::size_t i : line)
+            inkOf[i] = ink;
+    }
+    // The fills the edit took away: every line of theirs moved or gone. (An arm raised behind
+    // the head and cut at its outline has the head's outline among its lines too: the arm's
+    // fill did not go, and the body's line hidden under the arm stays hidden.)
+    std::unordered_map<Id, const StrokeData *> then, now;
+    for (const Stroke &s : before.strokes)
+        then[s.id] = s.data.get();
+    for (const Stroke &s : after.strokes)
+        now[s.id] = s.data.get();
+    std::vector<char> gone(before.fills.size(), 0);
+    for (std::size_t f = 0; f < before.fills.size(); ++f) {
+        bool all = true, any = false;
+        Fill fill = before.fills[f];
+        forEachFillStrokes(fill, [&](std::vector<Id> &ids) {
+            for (Id id : ids) {
+                any = true;
+                const auto it = now.find(id), at = then.find(id);
+                all = all && (it == now.end() || at == then.end() || it->second != at->second);
+            }
+        });
+        gone[f] = any && all;
+    }
+    if (std::none_of(gone.begin(), gone.end(), [](char g) { return g != 0; }))
+        return {};
+    const FillCover coverBefore(before, closeGap, gone);
+    const FillCover coverAfter(after, closeGap);
+    std::vector<UncoveredPart> out;
+    for (std::size_t i = 0; i < after.strokes.size(); ++i) {
+        const Stroke &s = after.strokes[i];
+        const auto it = was.find(s.id);
+        if (!isHiddenPart(s) || it == was.end() ||
+            it->second->data->points.size() != s.data->points.size())
+            continue;
+        HiddenCandidate c;
+        c.index = i;
+        c.places = runSamples(s.data->points);
+        if (c.places.empty())
+            continue;
+        const double width = double(s.data->width);
+        c.uncovered.resize(c.places.size());
+        for (std::size_t k = 0; k < c.places.size(); ++k)
+            c.uncovered[k] = coverBefore.covers(it->second->data->points, c.places[k], width) &&
+                             !coverAfter.covers(s.data->points, c.places[k], width);
+        smoothRuns(c.uncovered, s.data->points, c.places, width);
+        if (!anyRunUncovered(c))
+            continue;
+        c.ink = inkOf[i];
+        out.push_back({s.id, piecesOfPart(*s.data, c)});
+    }
+    return out;
+}
+bool pushUncoveredParts(Document *doc, Id groupId, const StrokeGroup &before)
+{
+    const StrokeGroup *group = doc->group(groupId);
+    if (!group)
+        return false;
+    const std::vector<UncoveredPart> parts =
+        uncoveredParts(before, *group, doc->settings().closeGap);
+    for (const UncoveredPart &p : parts) {
+        if (p.pieces.size() == 1)
+            doc->undoStack()->push(new ReplaceStrokeDataCommand(
+                doc, {p.part}, p.pieces, Command::tr("Show Lines")));
+        else
+            pushStrokeCut(doc, p.part, p.pieces);
+    }
+    return !parts.empty();
+}
+
+} // namespace finbook::model
