@@ -370,7 +370,7 @@ void paintFrameItems(QPainter &painter, const Frame &frame, const DocumentSettin
         for (const PaintLayer &layer : paintLayers(group, settings, options)) {
             if (replaceFills)
                 painter.setCompositionMode(QPainter::CompositionMode_Source);
-            for (const FillItem &fill : layer.fills)
+            for (const FillItem &fill : paintedFills(group, layer.fills))
                 paintFill(painter, fill);
             painter.setCompositionMode(QPainter::CompositionMode_SourceOver);
             for (const PaintItem &item : layer.strokes)

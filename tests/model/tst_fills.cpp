@@ -147,6 +147,7 @@ private slots:
     void closeGapSettingIsOneUndoStep();
     void closeGapSessionIsOneStep();
     void renderPaintsFillUnderStrokes();
+    void fillsMeetingAlongALineOfNoInkShowNoSeam();
     void onionSkinTintsFills();
     void saveLoadRoundTrip();
     void olderFilesOpenWithoutFills();
@@ -416,6 +417,41 @@ void TestFills::renderPaintsFillUnderStrokes()
     QCOMPARE(image.pixel(250, 250), 0xffffffffu); // outside: the background
     // The ink is drawn over the fill.
     QCOMPARE(image.pixel(100, 150), 0xff000000u);
+}
+
+// Two fills of one colour that meet along a line of no ink (a closed gap; Apply Pose's cut-out
+// closers) paint as one: the paper does not show through between their anti-aliased edges.
+void TestFills::fillsMeetingAlongALineOfNoInkShowNoSeam()
+{
+    Document doc;
+    const Id g = squareDocument(doc);
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, g, lineOfNoInk({QPointF(92, 96), QPointF(208, 204)}, 3.0)));
+    push(doc, fillRegionCommand(&doc, g, QPointF(175, 125), kRed));
+    push(doc, fillRegionCommand(&doc, g, QPointF(125, 175), kRed));
+    // A square inside one of them, of the same colour: a face nested in a face's hole.
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, g, polylineStroke(squareCorners(QRectF(160, 112, 24, 24)))));
+    push(doc, fillRegionCommand(&doc, g, QPointF(172, 124), kRed));
+    QCOMPARE(filledFaces(doc, g), 3);
+    QCOMPARE(doc.group(g)->fills.size(), std::size_t(3));
+    DocumentSettings settings = doc.settings();
+    settings.canvasSize = QSize(300, 300);
+    const QImage image = renderFrame(doc.frameAt(0), settings, QSize(300, 300));
+    int worst = 0; // the largest channel difference from the fill's colour along the line
+    for (int x = 110; x <= 190; ++x)
+        for (int y = 90; y <= 210; ++y) {
+            const QRgb c = image.pixel(x, y);
+            if (std::abs(y - (96 + (x - 92) * 108.0 / 116.0)) > 3)
+                continue;
+            worst =
+                std::max({worst, std::abs(qRed(c) - qRed(kRed)), std::abs(qGreen(c) - qGreen(kRed)),
+                          std::abs(qBlue(c) - qBlue(kRed))});
+        }
+    QVERIFY2(worst <= 8, qPrintable(QString::number(worst)));
+    // Joined into one path, the nested face and the one round it are both painted.
+    for (const QPoint p : {QPoint(172, 124), QPoint(190, 110), QPoint(120, 180)})
+        QCOMPARE(image.pixel(p), kRed);
 }
 
 void TestFills::onionSkinTintsFills()

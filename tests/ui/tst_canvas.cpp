@@ -2,6 +2,7 @@
 #include "tst_tools_support.h"
 
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/render.h>
 #include <finbook/ui/tools/tool_pen.h>
 #include <finbook/ui/window/editor_state.h>
@@ -30,6 +31,7 @@ private slots:
     void onionSkinShowsTintedNeighbours();
     void onionSkinHiddenWhilePlaying();
     void onionGhostIsEvenWhereItemsOverlap();
+    void fillsMeetingAlongALineOfNoInkShowNoSeam();
     void cacheFollowsUndo();
     void hiddenObjectsAreNotDrawn();
     void rasterMatchesQPainter_data();
@@ -225,6 +227,37 @@ void TestCanvas::onionGhostIsEvenWhereItemsOverlap()
     const QColor run = pixelAt({80, 270}), joint = pixelAt({120, 270});
     QVERIFY2(run.green() < oneFill.green() - 20, qPrintable(run.name())); // ink, not fill
     QVERIFY2(near(joint, run), qPrintable(joint.name() + " " + run.name()));
+}
+
+// As tst_fills' test of the same name, on the canvas's own raster: two fills of one colour that
+// meet along a line of no ink show no light seam between them.
+void TestCanvas::fillsMeetingAlongALineOfNoInkShowNoSeam()
+{
+    const model::Id g = m_doc->frameAt(0).groups[0].id;
+    addStroke(*m_doc, g, polyline({{100, 100}, {200, 100}, {200, 200}, {100, 200}, {100, 100}}));
+    addStroke(*m_doc, g, model::lineOfNoInk({QPointF(92, 96), QPointF(208, 204)}, 3.0));
+    constexpr QRgb kFill = 0xffe03020;
+    for (const QPointF at : {QPointF(175, 125), QPointF(125, 175)}) {
+        auto fill = model::fillRegionCommand(m_doc.get(), g, at, kFill);
+        QVERIFY(fill);
+        m_doc->undoStack()->push(fill.release());
+    }
+    QCOMPARE(m_doc->frameAt(0).groups[0].fills.size(), std::size_t(2));
+    m_canvas->fitToView();
+    const QImage image = m_canvas->grab().toImage();
+    int worst = 0; // the largest channel difference from the fill's colour along the line
+    for (int k = 20; k <= 100; ++k) {
+        const QPointF on(92 + k, 96 + k * 108.0 / 116.0);
+        for (int d = -2; d <= 2; ++d) {
+            const QPoint w =
+                (m_canvas->mapFromCanvas(on) * image.devicePixelRatio()).toPoint() + QPoint(0, d);
+            const QRgb c = image.pixel(w);
+            worst =
+                std::max({worst, std::abs(qRed(c) - qRed(kFill)),
+                          std::abs(qGreen(c) - qGreen(kFill)), std::abs(qBlue(c) - qBlue(kFill))});
+        }
+    }
+    QVERIFY2(worst <= 8, qPrintable(QString::number(worst)));
 }
 
 void TestCanvas::onionSkinHiddenWhilePlaying()

@@ -69,6 +69,37 @@ void paintFill(QPainter &painter, const FillItem &fill)
         painter.fillPath(tone.path, QColor::fromRgba(tone.color));
 }
 
+std::vector<FillItem> paintedFills(const StrokeGroup &group, const std::vector<FillItem> &fills)
+{
+    if (group.isDeformed() && group.rig.isPosed())
+        return fills;
+    std::vector<FillItem> out;
+    std::vector<QRectF> boxes;
+    out.reserve(fills.size());
+    for (const FillItem &fill : fills) {
+        const QRectF box = fill.path.controlPointRect();
+        int into = -1;
+        if (fill.tones.empty())
+            for (int i = int(out.size()) - 1; i >= 0; --i) {
+                const FillItem &o = out[std::size_t(i)];
+                if (o.color == fill.color && o.tones.empty()) {
+                    into = i;
+                    break;
+                }
+                if (boxes[std::size_t(i)].intersects(box))
+                    break; // painted between, over this fill's place: the order matters
+            }
+        if (into < 0) {
+            out.push_back(fill);
+            boxes.push_back(box);
+            continue;
+        }
+        out[std::size_t(into)].path.addPath(fill.path);
+        boxes[std::size_t(into)] |= box;
+    }
+    return out;
+}
+
 bool frameHasFills(const Frame &frame, const RenderOptions &options)
 {
     return options.fills &&

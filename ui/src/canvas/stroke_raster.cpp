@@ -279,7 +279,7 @@ void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptio
             if (group.picture && (group.visible || options.showHidden))
                 drawPicture(group, options.tint, itemOpacity);
             for (const model::PaintLayer &layer : model::paintLayers(group, settings, options)) {
-                for (const model::FillItem &fill : layer.fills) {
+                for (const model::FillItem &fill : model::paintedFills(group, layer.fills)) {
                     drawFill(fill.path, fill.color, itemOpacity);
                     for (const model::ToneItem &tone : fill.tones)
                         drawFill(tone.path, tone.color, itemOpacity);

@@ -98,6 +98,18 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<Pai
 // Paints one item: its path, then its tones (the canvas raster draws its own way).
 void paintFill(QPainter &painter, const FillItem &fill);
 
+// A layer's fills (`fills`, back to front) as the renderers paint them: the flat fills of one
+// colour joined into one path wherever that changes nothing else, so that two fills of one
+// colour meeting along a line of no ink (Fill All's fills either side of a closed gap; Apply
+// Pose's cut-out closers) paint as one. Painted apart, each covered the pixels of their shared
+// edge in part, and the paper showed through as a light seam. A fill joins the last earlier
+// one of its colour that no fill of another colour painted between them overlaps (their
+// boxes); fills with tones stay as they are. Only an object at rest (`group`): its fills are
+// faces of one arrangement, which never overlap, so joined paths cover each pixel as painted
+// apart; a posed object's pieces and sockets overlap, and a path of overlapping parts of
+// either turning would leave holes where they meet.
+std::vector<FillItem> paintedFills(const StrokeGroup &group, const std::vector<FillItem> &fills);
+
 // Whether any object of the frame that `options` shows has fills (false when options leave
 // fills out).
 bool frameHasFills(const Frame &frame, const RenderOptions &options = {});
