@@ -83,9 +83,8 @@ struct FillCover {
                 return true;
         return false;
     }
-    // Whether fills cover the line at `at` on both sides, a pen width off it: a line inked
-    // again bounds the regions beside it, so the line itself lies on their edges, but it is
-    // covered only where a fill lies over it, on either side.
+    // Whether fills cover the line at `at` on both sides, a pen width off it (a part that lies
+    // along the edge of a fill is not under it).
     bool covers(const std::vector<StrokePoint> &points, const RunPlace &at, double width) const
     {
         const std::size_t k = std::min(at.segment, points.size() - 2);
@@ -255,9 +254,14 @@ std::vector<UncoveredPart> uncoveredParts(const StrokeGroup &before, const Strok
             continue;
         const double width = double(s.data->width);
         c.uncovered.resize(c.places.size());
-        for (std::size_t k = 0; k < c.places.size(); ++k)
+        for (std::size_t k = 0; k < c.places.size(); ++k) {
+            // Covered before: under the fill on both sides. Uncovered after: no fill at the
+            // line itself, so that a run inked ends on the edge of a fill still over the
+            // line (the body's line at the neck, inked up to the arm's outline, not past it).
+            const StrokePoint p = pointOfRun(s.data->points, c.places[k]);
             c.uncovered[k] = coverBefore.covers(it->second->data->points, c.places[k], width) &&
-                             !coverAfter.covers(s.data->points, c.places[k], width);
+                             !coverAfter.covers(QPointF(p.x, p.y));
+        }
         smoothRuns(c.uncovered, s.data->points, c.places, width);
         if (!anyRunUncovered(c))
             continue;
@@ -275,8 +279,8 @@ bool pushUncoveredParts(Document *doc, Id groupId, const StrokeGroup &before)
         uncoveredParts(before, *group, doc->settings().closeGap);
     for (const UncoveredPart &p : parts) {
         if (p.pieces.size() == 1)
-            doc->undoStack()->push(new ReplaceStrokeDataCommand(
-                doc, {p.part}, p.pieces, Command::tr("Show Lines")));
+            doc->undoStack()->push(
+                new ReplaceStrokeDataCommand(doc, {p.part}, p.pieces, Command::tr("Show Lines")));
         else
             pushStrokeCut(doc, p.part, p.pieces);
     }

@@ -30,8 +30,9 @@ struct UncoveredPart {
 // The hidden parts of `after` (an object's strokes and fills after an edit) with runs that a fill
 // the edit took away covered in `before` (the same object before it; a fill every line of which
 // the edit moved or removed: the head's, not the arm's that the head's outline also bounded)
-// and that no fill covers now. "Covered" is on both sides of the line, a pen width off it: an
-// inked line lies on the edge of the regions it bounds. A run shorter than two pen widths
+// and that no fill covers now: covered before on both sides of the line, a pen width off it
+// (a part along a fill's edge was not under it), and after at the line itself (a run inked
+// ends on the edge of a fill still over the line). A run shorter than two pen widths
 // takes the state of the runs beside it, except that a short run at an end of a part is never
 // inked (the end lies on the outline that hid it). Parts that are not in both, or whose points
 // changed in number, are left alone.
