@@ -24,6 +24,7 @@ private slots:
     void cleanup() { m_window.reset(); }
 
     void clickingASwatchPicksThePensColour();
+    void theChosenSwatchFollowsThePensColour();
     void editsAreUndoableSteps();
     void dragReordersTheSwatches();
     void gimpPalettesInAndOut();
@@ -83,6 +84,28 @@ void TestPalettePanel::clickingASwatchPicksThePensColour()
     // The keys still reach the canvas after the click.
     typeKey(Qt::Key_E);
     QCOMPARE(m_window->canvas()->currentTool()->id(), QStringLiteral("tool.eraser"));
+}
+
+// A colour picked elsewhere (the eyedropper sets the pen's colour) chooses its swatch; a colour
+// no swatch has leaves the choice alone, so Set still recolours that swatch with it.
+void TestPalettePanel::theChosenSwatchFollowsThePensColour()
+{
+    const model::Palette &p = doc()->palette();
+    clickSwatch(2);
+    QCOMPARE(panel()->currentSwatch(), 2);
+    ui::PenSettings s = pen()->settings();
+    s.color = QColor::fromRgb(p.swatches[6].color);
+    pen()->setSettings(s);
+    QCOMPARE(panel()->currentSwatch(), 6);
+    QCOMPARE(panel()->nameField()->text(), p.swatches[6].name);
+    s.color = QColor(1, 2, 3);
+    QVERIFY(std::none_of(p.swatches.begin(), p.swatches.end(),
+                         [&](const model::Swatch &w) { return w.color == s.color.rgb(); }));
+    pen()->setSettings(s);
+    QCOMPARE(panel()->currentSwatch(), 6);
+    button("paletteRecolour")->click();
+    QCOMPARE(doc()->palette().swatches[6].color, s.color.rgb());
+    QCOMPARE(doc()->undoStack()->count(), 1); // choosing is not an edit; Set is
 }
 
 void TestPalettePanel::editsAreUndoableSteps()

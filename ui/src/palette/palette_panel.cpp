@@ -150,6 +150,24 @@ PalettePanel::PalettePanel(model::Document *document, PenTool *pen, QWidget *par
     // A drop has moved a row: the palette follows once the drop is over.
     connect(m_grid->model(), &QAbstractItemModel::rowsMoved, this,
             [this] { QTimer::singleShot(0, this, &PalettePanel::reorderFromGrid); });
+    // The pen's colour picked elsewhere (the eyedropper, the colour button, a shortcut): the
+    // swatch of that colour is the chosen one, as in Krita's and Pencil2D's palettes. A colour
+    // no swatch has leaves the choice as it is, so that Set can still give it to that swatch.
+    connect(m_pen, &PenTool::settingsChanged, this, [this](const PenSettings &settings) {
+        const auto &swatches = m_doc->palette().swatches;
+        const int current = m_grid->currentRow();
+        if (current >= 0 && current < int(swatches.size()) &&
+            swatches[std::size_t(current)].color == settings.color.rgb())
+            return;
+        for (int row = 0; row < m_grid->count(); ++row) {
+            const int index = m_grid->item(row)->data(kSwatchIndexRole).toInt();
+            if (index >= 0 && index < int(swatches.size()) &&
+                swatches[std::size_t(index)].color == settings.color.rgb()) {
+                m_grid->setCurrentRow(row);
+                return;
+            }
+        }
+    });
     connect(m_doc, &model::Document::paletteChanged, this, &PalettePanel::rebuild);
     connect(m_doc, &model::Document::documentReset, this, &PalettePanel::rebuild);
     rebuild();
