@@ -105,8 +105,8 @@ bool isHiddenPart(const Stroke &s)
     return s.data && s.data->color == kHiddenLineColor && s.data->points.size() >= 2;
 }
 
-// A hidden part of `after` that may be uncovered: its samples, and which of them a fill covered
-// before the edit.
+// A hidden part of `after` that the edit may have uncovered: its samples, which of them to ink,
+// and the colour of its line's inked parts.
 struct HiddenCandidate {
     std::size_t index = 0; // into after.strokes
     std::vector<RunPlace> places;

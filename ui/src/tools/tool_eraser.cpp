@@ -175,10 +175,13 @@ bool EraserTool::openMacro(const std::vector<model::Id> &strokes)
     // Erasing from a posed object makes its pose the drawing first, so what is left stays
     // where it is shown.
     const bool applied = StrokeEditing::applyPoses(doc, groups);
-    for (const model::StrokeGroup &g : StrokeEditing::objectsNow(doc, groups))
+    std::vector<model::Id> reached;
+    for (model::Id id : groups)
         if (std::none_of(m_before.begin(), m_before.end(),
-                         [&](const model::StrokeGroup &b) { return b.id == g.id; }))
-            m_before.push_back(g);
+                         [id](const model::StrokeGroup &b) { return b.id == id; }))
+            reached.push_back(id);
+    for (model::StrokeGroup &g : StrokeEditing::objectsNow(doc, reached))
+        m_before.push_back(std::move(g));
     return applied;
 }
 

@@ -441,11 +441,13 @@ void SelectTool::commitTransform()
             data.push_back(moved ? std::move(moved) : std::make_shared<model::StrokeData>(part));
         }
     }
-    std::vector<model::Id> partGroups;
+    std::vector<model::Id> fillGroups; // the objects of the moved lines
     for (model::Id id : parts)
         if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
-            partGroups.push_back(doc->frameAt(at).groups[std::size_t(at.group)].id);
-    const std::vector<model::StrokeGroup> before = StrokeEditing::objectsNow(doc, partGroups);
+            if (const model::Id gid = doc->frameAt(at).groups[std::size_t(at.group)].id;
+                !contains(fillGroups, gid))
+                fillGroups.push_back(gid);
+    const std::vector<model::StrokeGroup> before = StrokeEditing::objectsNow(doc, fillGroups);
     if (!parts.empty())
         doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, parts, data, text));
     // A fill region all of whose lines moved moves with them: its seed too, so that it is not
@@ -453,12 +455,6 @@ void SelectTool::commitTransform()
     // than its width lost a small region's colour to its neighbour).
     std::vector<model::Id> sorted = parts;
     std::sort(sorted.begin(), sorted.end());
-    std::vector<model::Id> fillGroups;
-    for (model::Id id : parts)
-        if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
-            if (const model::Id gid = doc->frameAt(at).groups[std::size_t(at.group)].id;
-                !contains(fillGroups, gid))
-                fillGroups.push_back(gid);
     for (model::Id gid : fillGroups) {
         std::vector<model::Fill> fills = doc->group(gid)->fills;
         bool changed = false;
