@@ -655,7 +655,9 @@ void TestTools::aCutOutPoseMovesAndDeletesWholeLines()
 void TestTools::aHeadLassoedAfterApplyPoseMovesAlone()
 {
     using namespace finbook::testing;
-    const auto [head, box] = openApplyPoseHead();
+    const auto opened = openApplyPoseHead();
+    const std::size_t head = opened.first;
+    const QRectF box = opened.second;
     QVERIFY(!box.isEmpty());
     const model::StrokeGroup &g = m_doc->frameAt(0).groups.front();
     const QTransform view = pictureView(shownBounds(g).adjusted(-40, -40, 40, 40), 480);
@@ -701,7 +703,9 @@ void TestTools::aHeadLassoedAfterApplyPoseMovesAlone()
 void TestTools::aHeadMovedOffTheArmsShowsTheirTops()
 {
     using namespace finbook::testing;
-    const auto [head, box] = openApplyPoseHead();
+    const auto opened = openApplyPoseHead();
+    const std::size_t head = opened.first;
+    const QRectF box = opened.second;
     QVERIFY(!box.isEmpty());
     const model::StrokeGroup &g = m_doc->frameAt(0).groups.front();
     const std::vector<model::Stroke> strokes = g.strokes;
