@@ -67,26 +67,25 @@ private slots:
 private:
     // tests/data/apply_pose_head.finbook (a figure drawn in the app, Apply Pose made with both
     // arms raised behind the head): the head (the inked line highest up) and its box.
-    std::pair<std::size_t, QRectF> openApplyPoseHead()
+    bool openApplyPoseHead(std::size_t &head, QRectF &box)
     {
         if (model::openFinbook(
                 *m_doc, QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/apply_pose_head.finbook")))
-            return {};
+            return false;
         m_state->setCurrentFrameIndex(0);
         if (m_doc->frameAt(0).groups.empty() || m_doc->frameAt(0).groups.front().rig.isPosed())
-            return {};
+            return false;
         const model::StrokeGroup &g = m_doc->frameAt(0).groups.front();
-        std::size_t head = 0;
         float top = 1e9f;
         for (std::size_t i = 0; i < g.strokes.size(); ++i)
             if (qAlpha(g.strokes[i].data->color) != 0)
                 for (const model::StrokePoint &p : g.strokes[i].data->points)
                     if (p.y < top)
                         top = p.y, head = i;
-        QRectF box;
+        box = QRectF();
         for (const model::StrokePoint &p : g.strokes[head].data->points)
             box |= QRectF(QPointF(p.x, p.y), QSizeF(0.01, 0.01));
-        return {head, box};
+        return !box.isEmpty();
     }
     // A lasso of the Select tool round `box`, a tenth wider than it.
     void lassoRound(const QRectF &box)
@@ -655,10 +654,9 @@ void TestTools::aCutOutPoseMovesAndDeletesWholeLines()
 void TestTools::aHeadLassoedAfterApplyPoseMovesAlone()
 {
     using namespace finbook::testing;
-    const auto opened = openApplyPoseHead();
-    const std::size_t head = opened.first;
-    const QRectF box = opened.second;
-    QVERIFY(!box.isEmpty());
+    std::size_t head = 0;
+    QRectF box;
+    QVERIFY(openApplyPoseHead(head, box));
     const model::StrokeGroup &g = m_doc->frameAt(0).groups.front();
     const QTransform view = pictureView(shownBounds(g).adjusted(-40, -40, 40, 40), 480);
     const QImage before = framePicture(*m_doc, 0, view, 480);
@@ -702,12 +700,11 @@ void TestTools::aHeadLassoedAfterApplyPoseMovesAlone()
 // (uncovered_lines.h) and the arms keep their fills; the rest of the figure is as it was.
 void TestTools::aHeadMovedOffTheArmsShowsTheirTops()
 {
-    using namespace finbook::testing;
-    const auto opened = openApplyPoseHead();
-    const std::size_t head = opened.first;
-    const QRectF box = opened.second;
-    QVERIFY(!box.isEmpty());
+    std::size_t head = 0;
+    QRectF box;
+    QVERIFY(openApplyPoseHead(head, box));
     const model::StrokeGroup &g = m_doc->frameAt(0).groups.front();
+    using namespace finbook::testing;
     const std::vector<model::Stroke> strokes = g.strokes;
     const std::vector<model::Fill> fills = g.fills;
     const auto fillsShown = [&] {
