@@ -10,6 +10,7 @@
 #include <finbook/model/picture/picture_commands.h>
 #include <finbook/model/picture/picture_object.h>
 #include <finbook/model/rig/rig_commands.h>
+#include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/tools/stroke_editing.h>
 #include <finbook/ui/tools/tool_eraser.h>
 #include <finbook/ui/tools/tool_eyedropper.h>
@@ -703,6 +704,12 @@ void TestTools::aHeadMovedOffTheArmsShowsTheirTops()
     std::size_t head = 0;
     QRectF box;
     QVERIFY(openApplyPoseHead(head, box));
+    // An empty object for Object → Move To (added first: the figure's object is held below).
+    model::StrokeGroup other;
+    other.id = m_doc->allocateId();
+    other.name = QStringLiteral("Head");
+    const model::Id headObject = other.id;
+    m_doc->insertGroup(m_doc->frameAt(0).id, 1, std::move(other));
     const model::StrokeGroup &g = m_doc->frameAt(0).groups.front();
     using namespace finbook::testing;
     const std::vector<model::Stroke> strokes = g.strokes;
@@ -740,13 +747,17 @@ void TestTools::aHeadMovedOffTheArmsShowsTheirTops()
     };
     const double hiddenBefore = hiddenLength(strokes);
     const QPointF by(2.2 * box.width(), 0);
-    enum class Edit { Move, Delete, Erase };
-    for (const Edit edit : {Edit::Move, Edit::Delete, Edit::Erase}) {
+    enum class Edit { Move, Delete, Erase, ToObject };
+    for (const Edit edit : {Edit::Move, Edit::Delete, Edit::Erase, Edit::ToObject}) {
         const bool deleteIt = edit != Edit::Move;
         if (edit == Edit::Erase) { // a rub across the top of the head's outline
             m_canvas->setCurrentTool(QStringLiteral("tool.eraser"));
             dragCanvas(m_canvas.get(), QPointF(box.center().x() - 4, box.top()),
                        QPointF(box.center().x() + 4, box.top()), 2);
+        } else if (edit == Edit::ToObject) { // Object → Move To: the head an object of its own
+            lassoRound(box);
+            m_state->setCurrentGroupId(g.id);
+            ui::ObjectActions(m_state.get()).moveSelectionTo(headObject);
         } else {
             lassoRound(box);
             if (deleteIt)
@@ -766,7 +777,9 @@ void TestTools::aHeadMovedOffTheArmsShowsTheirTops()
         // Away from where the head was and is, the figure shows as it did.
         const QImage after = framePicture(*m_doc, 0, view, 480);
         const QRect was = view.mapRect(box.adjusted(-4, -4, 4, 4)).toAlignedRect();
-        const QRect now = view.mapRect(box.translated(by).adjusted(-4, -4, 4, 4)).toAlignedRect();
+        const QRect now =
+            view.mapRect(box.translated(edit == Edit::Move ? by : QPointF()).adjusted(-4, -4, 4, 4))
+                .toAlignedRect();
         long long compared = 0, differ = 0;
         for (int y = 0; y < before.height(); ++y)
             for (int x = 0; x < before.width(); ++x)
