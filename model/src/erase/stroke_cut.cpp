@@ -13,19 +13,6 @@ namespace finbook::model {
 
 namespace {
 
-StrokePoint pointAt(const std::vector<StrokePoint> &points, const geometry::PolylinePlace &at)
-{
-    const StrokePoint &a = points[std::size_t(at.segment)];
-    if (points.size() == 1 || at.t == 0.0)
-        return a;
-    const StrokePoint &b = points[std::size_t(at.segment) + 1];
-    if (at.t == 1.0)
-        return b; // exactly: a + 1 × (b − a) is not always b in floating point
-    const float t = float(at.t);
-    return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y),
-            a.pressure + t * (b.pressure - a.pressure)};
-}
-
 void dropRepeatedEnds(std::vector<StrokePoint> &points)
 {
     const auto same = [](const StrokePoint &a, const StrokePoint &b) {
@@ -115,17 +102,30 @@ std::optional<std::vector<StrokeDataPtr>> cutStroke(const StrokeData &stroke,
         piece->color = stroke.color;
         piece->width = stroke.width;
         piece->points.reserve(std::size_t(span.to.segment - span.from.segment) + 2);
-        piece->points.push_back(pointAt(points, span.from));
+        piece->points.push_back(pointAlong(points, span.from));
         piece->points.insert(piece->points.end(),
                              points.begin() + std::ptrdiff_t(span.from.segment) + 1,
                              points.begin() + std::ptrdiff_t(span.to.segment) + 1);
-        piece->points.push_back(pointAt(points, span.to));
+        piece->points.push_back(pointAlong(points, span.to));
         // A cut exactly on a sample point repeats it (only the cut ends can).
         dropRepeatedEnds(piece->points);
         if (atLeast(piece->points, kMinPieceLength))
             pieces.push_back(std::move(piece));
     }
     return pieces;
+}
+
+StrokePoint pointAlong(const std::vector<StrokePoint> &points, const geometry::PolylinePlace &at)
+{
+    const StrokePoint &a = points[std::size_t(at.segment)];
+    if (points.size() == 1 || at.t == 0.0)
+        return a;
+    const StrokePoint &b = points[std::size_t(at.segment) + 1];
+    if (at.t == 1.0)
+        return b; // exactly: a + 1 × (b − a) is not always b in floating point
+    const float t = float(at.t);
+    return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y),
+            a.pressure + t * (b.pressure - a.pressure)};
 }
 
 std::vector<Id> pushStrokeCut(Document *doc, Id strokeId, const std::vector<StrokeDataPtr> &pieces)

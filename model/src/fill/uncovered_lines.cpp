@@ -26,38 +26,19 @@ constexpr double kShortestUncoveredRun = 2.0;
 // The most samples one part is given (a part crossing a whole canvas at kUncoverStep).
 constexpr int kMostUncoverSamples = 8192;
 
-// A place along a polyline: segment k, t in [0, 1].
-struct RunPlace {
-    std::size_t segment = 0;
-    double t = 0.0;
-};
-
-StrokePoint pointOfRun(const std::vector<StrokePoint> &points, const RunPlace &at)
+std::vector<geometry::PolylinePlace> runSamples(const std::vector<StrokePoint> &points)
 {
-    const StrokePoint &a = points[at.segment];
-    if (at.t == 0.0 || at.segment + 1 >= points.size())
-        return a;
-    const StrokePoint &b = points[at.segment + 1];
-    if (at.t == 1.0)
-        return b;
-    const float t = float(at.t);
-    return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y),
-            a.pressure + t * (b.pressure - a.pressure)};
-}
-
-std::vector<RunPlace> runSamples(const std::vector<StrokePoint> &points)
-{
-    std::vector<RunPlace> out;
+    std::vector<geometry::PolylinePlace> out;
     for (std::size_t k = 0; k + 1 < points.size(); ++k) {
         const double length = std::hypot(double(points[k + 1].x) - double(points[k].x),
                                          double(points[k + 1].y) - double(points[k].y));
         const int n = std::clamp(int(std::ceil(length / kUncoverStep)), 1, kMostUncoverSamples);
         for (int j = 0; j < n; ++j)
-            out.push_back({k, double(j) / double(n)});
+            out.push_back({Eigen::Index(k), double(j) / double(n)});
         if (out.size() > std::size_t(kMostUncoverSamples))
             return {};
     }
-    out.push_back({points.size() - 1, 0.0});
+    out.push_back({Eigen::Index(points.size()) - 1, 0.0});
     return out;
 }
 
@@ -85,10 +66,11 @@ struct FillCover {
     }
     // Whether fills cover the line at `at` on both sides, a pen width off it (a part that lies
     // along the edge of a fill is not under it).
-    bool covers(const std::vector<StrokePoint> &points, const RunPlace &at, double width) const
+    bool covers(const std::vector<StrokePoint> &points, const geometry::PolylinePlace &at,
+                double width) const
     {
-        const std::size_t k = std::min(at.segment, points.size() - 2);
-        const StrokePoint p = pointOfRun(points, at);
+        const std::size_t k = std::min(std::size_t(at.segment), points.size() - 2);
+        const StrokePoint p = pointAlong(points, at);
         const double dx = double(points[k + 1].x) - double(points[k].x);
         const double dy = double(points[k + 1].y) - double(points[k].y);
         const double length = std::hypot(dx, dy);
@@ -109,14 +91,14 @@ bool isHiddenPart(const Stroke &s)
 // and the colour of its line's inked parts.
 struct HiddenCandidate {
     std::size_t index = 0; // into after.strokes
-    std::vector<RunPlace> places;
+    std::vector<geometry::PolylinePlace> places;
     std::vector<char> uncovered; // the runs to ink, smoothed
     QRgb ink = 0xff000000;
 };
 
 // Runs shorter than kShortestUncoveredRun pen widths take the state of the runs beside them.
 void smoothRuns(std::vector<char> &state, const std::vector<StrokePoint> &points,
-                const std::vector<RunPlace> &places, double width)
+                const std::vector<geometry::PolylinePlace> &places, double width)
 {
     const double shortest = kShortestUncoveredRun * std::max(width, 0.5);
     for (int pass = 0; pass < 2; ++pass) {
@@ -129,8 +111,8 @@ void smoothRuns(std::vector<char> &state, const std::vector<StrokePoint> &points
             std::size_t j = i;
             double length = 0.0;
             while (j + 1 < state.size() && state[j + 1] == state[i]) {
-                const StrokePoint a = pointOfRun(points, places[j]),
-                                  b = pointOfRun(points, places[j + 1]);
+                const StrokePoint a = pointAlong(points, places[j]),
+                                  b = pointAlong(points, places[j + 1]);
                 length += std::hypot(double(b.x) - double(a.x), double(b.y) - double(a.y));
                 ++j;
             }
@@ -176,7 +158,7 @@ std::vector<StrokeDataPtr> piecesOfPart(const StrokeData &part, const HiddenCand
         piece->points.clear();
         piece->color = c.uncovered[i] ? c.ink : kHiddenLineColor;
         for (std::size_t k = i; k <= last; ++k)
-            piece->points.push_back(pointOfRun(part.points, c.places[k]));
+            piece->points.push_back(pointAlong(part.points, c.places[k]));
         if (piece->points.size() >= 2)
             out.push_back(std::move(piece));
         i = j + 1;
@@ -197,54 +179,45 @@ std::vector<UncoveredPart> uncoveredParts(const StrokeGroup &before, const Strok
     if (before.fills.empty() || (after.isDeformed() && after.rig.isPosed()) ||
         (before.isDeformed() && before.rig.isPosed()))
         return {};
-    std::unordered_map<Id, const Stroke *> was;
-    for (const Stroke &s : before.strokes)
-        if (isHiddenPart(s))
-            was[s.id] = &s;
-    if (was.empty())
+    if (std::none_of(before.strokes.begin(), before.strokes.end(), isHiddenPart))
         return {};
-    // The inked colour of each line of parts.
-    std::vector<QRgb> inkOf(after.strokes.size(), 0xff000000);
-    for (const std::vector<std::size_t> &line : linesOfParts(after)) {
-        QRgb ink = 0xff000000;
-        for (std::size_t i : line)
-            if (after.strokes[i].data && qAlpha(after.strokes[i].data->color) != 0) {
-                ink = after.strokes[i].data->color;
-                break;
-            }
-        for (std::size_t i : line)
-            inkOf[i] = ink;
-    }
     // The fills the edit took away: every line of theirs moved or gone. (An arm raised behind
     // the head and cut at its outline has the head's outline among its lines too: the arm's
     // fill did not go, and the body's line hidden under the arm stays hidden.)
-    std::unordered_map<Id, const StrokeData *> then, now;
+    std::unordered_map<Id, const Stroke *> was;
+    std::unordered_map<Id, const StrokeData *> now;
     for (const Stroke &s : before.strokes)
-        then[s.id] = s.data.get();
+        was[s.id] = &s;
     for (const Stroke &s : after.strokes)
         now[s.id] = s.data.get();
+    const auto edited = [&](const std::vector<Id> &ids) {
+        return std::all_of(ids.begin(), ids.end(), [&](Id id) {
+            const auto it = now.find(id);
+            const auto at = was.find(id);
+            return it == now.end() || at == was.end() || it->second != at->second->data.get();
+        });
+    };
     std::vector<char> gone(before.fills.size(), 0);
     for (std::size_t f = 0; f < before.fills.size(); ++f) {
-        bool all = true, any = false;
-        Fill fill = before.fills[f];
-        forEachFillStrokes(fill, [&](std::vector<Id> &ids) {
-            for (Id id : ids) {
-                any = true;
-                const auto it = now.find(id), at = then.find(id);
-                all = all && (it == now.end() || at == then.end() || it->second != at->second);
-            }
-        });
-        gone[f] = any && all;
+        const Fill &fill = before.fills[f];
+        const bool named = !fill.strokes.empty() || std::any_of(fill.more.begin(), fill.more.end(),
+                                                                [](const FillPlace &place) {
+                                                                    return !place.strokes.empty();
+                                                                });
+        gone[f] = named && edited(fill.strokes) &&
+                  std::all_of(fill.more.begin(), fill.more.end(),
+                              [&](const FillPlace &place) { return edited(place.strokes); });
     }
     if (std::none_of(gone.begin(), gone.end(), [](char g) { return g != 0; }))
         return {};
     const FillCover coverBefore(before, closeGap, gone);
     const FillCover coverAfter(after, closeGap);
     std::vector<UncoveredPart> out;
+    std::vector<QRgb> inkOf;
     for (std::size_t i = 0; i < after.strokes.size(); ++i) {
         const Stroke &s = after.strokes[i];
         const auto it = was.find(s.id);
-        if (!isHiddenPart(s) || it == was.end() ||
+        if (!isHiddenPart(s) || it == was.end() || !isHiddenPart(*it->second) ||
             it->second->data->points.size() != s.data->points.size())
             continue;
         HiddenCandidate c;
@@ -258,13 +231,23 @@ std::vector<UncoveredPart> uncoveredParts(const StrokeGroup &before, const Strok
             // Covered before: under the fill on both sides. Uncovered after: no fill at the
             // line itself, so that a run inked ends on the edge of a fill still over the
             // line (the body's line at the neck, inked up to the arm's outline, not past it).
-            const StrokePoint p = pointOfRun(s.data->points, c.places[k]);
+            const StrokePoint p = pointAlong(s.data->points, c.places[k]);
             c.uncovered[k] = coverBefore.covers(it->second->data->points, c.places[k], width) &&
                              !coverAfter.covers(QPointF(p.x, p.y));
         }
         smoothRuns(c.uncovered, s.data->points, c.places, width);
         if (!anyRunUncovered(c))
             continue;
+        if (inkOf.empty()) { // the inked colour of each line of parts, once something is inked
+            inkOf.assign(after.strokes.size(), 0xff000000);
+            for (const std::vector<std::size_t> &line : linesOfParts(after)) {
+                const auto inked = std::find_if(line.begin(), line.end(), [&](std::size_t k) {
+                    return after.strokes[k].data && qAlpha(after.strokes[k].data->color) != 0;
+                });
+                for (std::size_t k : line)
+                    inkOf[k] = inked != line.end() ? after.strokes[*inked].data->color : 0xff000000;
+            }
+        }
         c.ink = inkOf[i];
         out.push_back({s.id, piecesOfPart(*s.data, c)});
     }

@@ -3,6 +3,7 @@
 // geometry). A thick line goes where the eraser touches its drawn edge, not only its middle.
 #pragma once
 
+#include <finbook/geometry/erase/polyline_erase.h>
 #include <finbook/model/types.h>
 
 #include <QPointF>
@@ -14,6 +15,10 @@ namespace finbook::model {
 
 // Pieces shorter than this (canvas px) are slivers the eyes read as dots: they go too.
 constexpr double kMinPieceLength = 0.5;
+
+// The pen sample at `at` along `points` (position and pressure interpolated; a place at a
+// segment's end is that point exactly).
+StrokePoint pointAlong(const std::vector<StrokePoint> &points, const geometry::PolylinePlace &at);
 
 // What is left of `stroke` after a disc of `radius` (canvas px) swept along `rub` (one point
 // is a single dab): std::nullopt when the eraser missed it, an empty list when it all goes,
