@@ -118,6 +118,7 @@ private slots:
     void interpolationEndsAreExact();
     void turnedLimbKeepsItsLength();
     void curledLimbTurnsOneWay();
+    void limbBeyondAFoldTurnsAsItTurned();
     void pointGridAnswersAsASearchOfEveryPoint();
 };
 
@@ -461,6 +462,54 @@ void TestBetweenFit::curledLimbTurnsOneWay()
                                 .arg(t)
                                 .arg(got * 180.0 / std::numbers::pi)
                                 .arg(expected * 180.0 / std::numbers::pi)));
+    }
+}
+
+void TestBetweenFit::limbBeyondAFoldTurnsAsItTurned()
+{
+    // A limb (x ≥ 110) turned by 40° about the joint at x = 105, where the fitted pose folded:
+    // the joint's column of vertices lies scattered behind the body's edge, so the triangles
+    // on either side of it are turned over or torn, with angles that are noise. Whatever the
+    // noise, the limb turns by 40°, and halfway by 20° with its length kept.
+    const Eigen::Vector2d pivot(105.0, 20.0);
+    const Eigen::Matrix2d turn = Eigen::Rotation2Dd(40.0 * std::numbers::pi / 180.0).matrix();
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+        const test::GridMesh mesh = test::gridMesh(60, 8, 300.0, 40.0);
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<double> scatter(-6.0, 6.0);
+        Eigen::MatrixX2d V1 = mesh.V;
+        for (int r = 0; r <= mesh.rows; ++r) {
+            for (int c = 22; c <= mesh.columns; ++c) {
+                const int v = mesh.vertex(c, r);
+                V1.row(v) = (pivot + turn * (mesh.V.row(v).transpose() - pivot)).transpose();
+            }
+            const int fold = mesh.vertex(21, r);
+            V1.row(fold) << 92.0 + scatter(rng), mesh.V(fold, 1) + scatter(rng);
+        }
+        const auto data = arapInterpolationPrecompute(mesh.V, V1, mesh.F);
+        QVERIFY(data);
+        QVERIFY((*data)->flippedTriangles > 0);
+        const auto middle = arapInterpolate(**data, 0.5);
+        QVERIFY(middle);
+        for (Eigen::Index t = 0; t < mesh.F.rows(); ++t) {
+            if (mesh.V(mesh.F(t, 0), 0) < 115.0 || mesh.V(mesh.F(t, 1), 0) < 115.0 ||
+                mesh.V(mesh.F(t, 2), 0) < 115.0)
+                continue;
+            QVERIFY2(std::abs((*data)->angle(t) - 40.0 * std::numbers::pi / 180.0) < 1e-6,
+                     qPrintable(QString("seed %1, triangle %2: %3°")
+                                    .arg(seed)
+                                    .arg(t)
+                                    .arg((*data)->angle(t) * 180.0 / std::numbers::pi)));
+        }
+        const int from = mesh.vertex(24, 4), tip = mesh.vertex(60, 4); // x = 120 and x = 300
+        const double rest = (mesh.V.row(tip) - mesh.V.row(from)).norm();
+        const double half = ((*middle).row(tip) - (*middle).row(from)).norm();
+        QVERIFY2(std::abs(half / rest - 1.0) < 0.02,
+                 qPrintable(QString("seed %1: %2").arg(seed).arg(half / rest)));
+        const Eigen::Vector2d along = ((*middle).row(tip) - (*middle).row(from)).transpose();
+        const double degrees = std::atan2(along.y(), along.x()) * 180.0 / std::numbers::pi;
+        QVERIFY2(std::abs(degrees - 20.0) < 5.0,
+                 qPrintable(QString("seed %1: %2°").arg(seed).arg(degrees)));
     }
 }
 

@@ -8,9 +8,12 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <numeric>
+#include <tuple>
 #include <utility>
 
 namespace finbook::deform::between {
@@ -46,32 +49,75 @@ Eigen::MatrixX3i dualGraph(const Eigen::MatrixX3i &F)
     return across;
 }
 
-// Unwraps raw angles in (−π, π] breadth first over the dual graph (each triangle the branch
-// closest to the one it was reached from), then shifts each connected part by whole turns so
-// that its area-weighted mean lies in (−π, π].
-void unwrapAngles(const Eigen::MatrixX3i &F, const Eigen::VectorXd &area, Eigen::VectorXd &angle)
+// How far a triangle's raw angle can be trusted, in [0, 1]: the share of its map J that is a
+// turn (|similarity part| over ‖J‖, 1 for a turn and a scale, 0 for a mirror). A triangle
+// turned over (det J ≤ 0), or squashed flat, by a fold in the fitted pose has no turn of its
+// own: its angle is whatever its noise gives.
+double reliabilityOf(const Eigen::Matrix2d &J)
 {
+    if (J.determinant() <= 0.0)
+        return 0.0;
+    const double c = J(0, 0) + J(1, 1), s = J(1, 0) - J(0, 1);
+    const double norm = std::sqrt(2.0) * J.norm();
+    return norm > 0.0 ? std::clamp(std::hypot(c, s) / norm, 0.0, 1.0) : 0.0;
+}
+
+double wrapped(double a)
+{
+    return a - kTurn * std::round(a / kTurn);
+}
+
+// Unwraps raw angles in (−π, π] over the dual graph, the most trusted triangles first (as
+// quality-guided phase unwrapping does): from each part's most trusted triangle, the next
+// triangle taken is always the one reached over the smallest angle step, and a triangle with
+// no turn of its own (reliability below kTrusted) only after every trusted one it can reach.
+// Each triangle takes the branch closest to the last trusted angle on its way, so a fold's
+// turned-over triangles pass on no noise: the limb beyond a fold turns the way it turned
+// next to it. Then each connected part is shifted by whole turns so that its area-weighted
+// mean lies in (−π, π].
+void unwrapAngles(const Eigen::MatrixX3i &F, const Eigen::VectorXd &area,
+                  const Eigen::VectorXd &reliability, Eigen::VectorXd &angle)
+{
+    constexpr double kTrusted = 0.5;
     const Eigen::MatrixX3i across = dualGraph(F);
-    std::vector<bool> seen(std::size_t(F.rows()), false);
-    for (Eigen::Index root = 0; root < F.rows(); ++root) {
+    const Eigen::Index m = F.rows();
+    std::vector<bool> seen(std::size_t(m), false);
+    // The angle each triangle passes on: its own when trusted, else what reached it.
+    Eigen::VectorXd passed = angle;
+    // Roots: the most trusted, largest triangles first.
+    std::vector<int> order(static_cast<std::size_t>(m));
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        return std::pair(reliability(a) >= kTrusted, area(a)) >
+               std::pair(reliability(b) >= kTrusted, area(b));
+    });
+    using Step = std::tuple<double, int, int>; // cost, from, to
+    std::priority_queue<Step, std::vector<Step>, std::greater<>> queue;
+    for (const int root : order) {
         if (seen[std::size_t(root)])
             continue;
-        std::vector<int> part = {int(root)};
-        std::queue<int> queue;
-        queue.push(int(root));
+        std::vector<int> part = {root};
         seen[std::size_t(root)] = true;
-        while (!queue.empty()) {
-            const int t = queue.front();
-            queue.pop();
+        const auto reach = [&](int t) {
             for (int c = 0; c < 3; ++c) {
                 const int u = across(t, c);
                 if (u < 0 || seen[std::size_t(u)])
                     continue;
-                seen[std::size_t(u)] = true;
-                angle(u) += kTurn * std::round((angle(t) - angle(u)) / kTurn);
-                part.push_back(u);
-                queue.push(u);
+                const double step = std::abs(wrapped(angle(u) - passed(t)));
+                queue.emplace(step + (reliability(u) >= kTrusted ? 0.0 : 2.0 * kTurn), t, u);
             }
+        };
+        reach(root);
+        while (!queue.empty()) {
+            const auto [cost, t, u] = queue.top();
+            queue.pop();
+            if (seen[std::size_t(u)])
+                continue;
+            seen[std::size_t(u)] = true;
+            angle(u) = passed(t) + wrapped(angle(u) - passed(t));
+            passed(u) = reliability(u) >= kTrusted ? angle(u) : passed(t);
+            part.push_back(u);
+            reach(u);
         }
         double weighted = 0.0, total = 0.0;
         for (const int t : part) {
@@ -95,6 +141,7 @@ void decomposeTriangles(const Eigen::MatrixX2d &V0, const Eigen::MatrixX2d &V1,
     d.stretch.resize(m, 3);
     d.area.resize(m);
     d.gradient.resize(m, 6);
+    Eigen::VectorXd reliability(m);
     for (Eigen::Index t = 0; t < m; ++t) {
         Eigen::Matrix2d D0, D1;
         D0 << (V0.row(F(t, 1)) - V0.row(F(t, 0))).transpose(),
@@ -113,10 +160,11 @@ void decomposeTriangles(const Eigen::MatrixX2d &V0, const Eigen::MatrixX2d &V1,
         const Eigen::Vector2d g1 = inverse.row(0).transpose(), g2 = inverse.row(1).transpose();
         const Eigen::Vector2d g0 = -g1 - g2;
         d.gradient.row(t) << g0.x(), g0.y(), g1.x(), g1.y(), g2.x(), g2.y();
+        reliability(t) = reliabilityOf(J);
         if (J.determinant() <= 0.0)
             ++d.flippedTriangles;
     }
-    unwrapAngles(F, d.area, d.angle);
+    unwrapAngles(F, d.area, reliability, d.angle);
 }
 
 // Connected parts (d.component, centroids); returns the vertices the solve holds: the first

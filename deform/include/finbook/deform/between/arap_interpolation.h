@@ -4,10 +4,12 @@
 // Precompute: per triangle the affine map J taking its V0 corners to its V1 corners, split
 // into J = R(θ)·S (polar decomposition, S symmetric; positive definite unless the triangle
 // turned over). θ is unwrapped over the mesh: each triangle takes the 2π branch closest to the
-// neighbour it was reached from (breadth first over the dual graph), then each connected part
-// is shifted by a whole turn so that its area-weighted mean angle lies in (−π, π]. So a limb
-// turned by 170° turns the same way in all of its triangles, and a limb curled past 180°
-// keeps curling instead of unwinding in half of them.
+// last trusted angle on its way from its part's most trusted triangle, the way taken over the
+// smallest steps first (quality-guided, as phase unwrapping is), a triangle turned over by a
+// fold in V1 passing on nothing of its own; then each connected part is shifted by a whole
+// turn so that its area-weighted mean angle lies in (−π, π]. So a limb turned by 170° turns the
+// same way in all of its triangles, a limb curled past 180° keeps curling instead of unwinding
+// in half of them, and a limb beyond a fold turns by its own angle, not a turn more or less.
 // Solve at time t: target A(t) = R(t·θ)·((1 − t)·I + t·S) per triangle, then the vertices
 // minimising Σ_t area·‖J_t(U) − A_t(t)‖²_F: one back-substitution (x and y) through the
 // cotangent Laplacian factored in the precompute, one vertex per connected part held, then
