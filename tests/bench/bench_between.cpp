@@ -10,10 +10,11 @@
 //   error_median_pct, error_p95_pct: A's stroke points, fitted, against their true places in B,
 //     % of the drawing's diagonal;
 //   limb_change_pct: the mid in-between (t = 0.5, as-rigid-as-possible interpolation) — each
-//     bone's length (its joints carried by the motion) against its true length (a turned limb
-//     keeps its length), % change, max over bones longer than 4 px; naive_limb_change_pct the
-//     same for a point-to-point morph (each vertex halfway along a straight line to its fitted
-//     place);
+//     limb's chord from its base to each tip (A's joints carried by the motion) against the
+//     true one (the rig posed with half of each turn), % change, max over limbs longer than
+//     4 px whose joints lie in A's shape; fit_limb_change_pct the same for the fit against
+//     B's pose; naive_limb_change_pct for a point-to-point morph (each vertex halfway along a
+//     straight line to its fitted place);
 //   fit_ms: the whole fit (mesh, skeleton, precompute, fit from its starts, interpolation's
 //     precompute); inbetween_ms: one in-between's drawing (t = 0.5: strokes carried, fills tied
 //     as Apply Pose ties them); fills_kept: it has as many fills as A; vertices;
@@ -218,17 +219,27 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
             }
         }
     }
-    // Bone lengths in the mid in-between, against rest (a turned limb keeps its length).
+    // Limb lengths. A limb runs from a turned joint's parent (its base) to each tip below it.
+    // B's pose pins the mesh at its posed bones (an ARAP solve), so the true chord base–tip is
+    // that of the rig's joints posed: with all of B's turns for the fit, with half of each for
+    // the mid in-between (a limb with a turned limb of its own changes its chord). The fitted
+    // motion, its mid in-between and the straight-line morph carry A's rest joints through A's
+    // mesh. Only joints inside A's shape count: one the skeleton hung between two pieces drawn
+    // apart has no place in the mesh to be carried by.
     const SkeletonRig &skeleton = rig.skeleton;
-    Eigen::MatrixX2d joints(skeleton.jointCount(), 2);
-    for (int j = 0; j < skeleton.jointCount(); ++j)
+    const int n = skeleton.jointCount();
+    Eigen::MatrixX2d joints(n, 2);
+    for (int j = 0; j < n; ++j)
         joints.row(j) << skeleton.joints[std::size_t(j)].x(), skeleton.joints[std::size_t(j)].y();
+    const SkeletonRig &truePose = doc.group(g)->rig.skeleton;
+    SkeletonRig halfPose = truePose;
+    for (double &angle : halfPose.angles)
+        angle *= 0.5;
+    const std::vector<QPointF> jointsTrue = truePose.posedJoints(),
+                               jointsHalf = halfPose.posedJoints();
     const geometry::Embedding inA = geometry::embed(V, F, joints);
     const auto mid = deform::between::arapInterpolate(*fit.motion, 0.5);
     const Eigen::MatrixX2d naiveMid = 0.5 * (V + fit.fit.U);
-    // Limbs: each turned joint's parent (the limb's base) to every tip below it; the chord
-    // base–tip, which the true pose (a rigid turn) keeps and a straight-line morph shortens.
-    const int n = skeleton.jointCount();
     std::vector<bool> hasChild(std::size_t(n), false);
     for (int j = 0; j < n; ++j)
         if (skeleton.parent[std::size_t(j)] >= 0)
@@ -239,6 +250,25 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
                 return true;
         return false;
     };
+    // Whether a joint lies in A's shape (in the triangle it is embedded in; embed puts a joint
+    // outside, such as one the skeleton hung between two pieces drawn apart, on the nearest
+    // triangle, which the pose does not move with the joint's bone).
+    const auto inShape = [&](int joint) {
+        const int t = inA.I(joint);
+        if (t < 0)
+            return false;
+        const Eigen::Vector2d p = joints.row(joint).transpose();
+        const Eigen::Vector2d a0 = V.row(F(t, 0)).transpose(), a1 = V.row(F(t, 1)).transpose(),
+                              a2 = V.row(F(t, 2)).transpose();
+        const auto cross = [](const Eigen::Vector2d &u, const Eigen::Vector2d &v) {
+            return u.x() * v.y() - u.y() * v.x();
+        };
+        const double area = cross(a1 - a0, a2 - a0);
+        const double tolerance = 1e-9 * std::max(1.0, std::abs(area));
+        const double w0 = cross(a1 - p, a2 - p) / area, w1 = cross(a2 - p, a0 - p) / area,
+                     w2 = cross(a0 - p, a1 - p) / area;
+        return area != 0.0 && w0 >= -tolerance && w1 >= -tolerance && w2 >= -tolerance;
+    };
     // The joints carried by the mid in-between, the fit and the straight-line morph.
     const Eigen::MatrixX2d jointsMid = mid ? geometry::applyEmbedding(inA, *mid, F) : joints;
     const Eigen::MatrixX2d jointsFit = geometry::applyEmbedding(inA, fit.fit.U, F);
@@ -247,22 +277,28 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     int limbs = 0;
     for (int j = 0; j < n; ++j) {
         const int base = skeleton.parent[std::size_t(j)];
-        if (base < 0 || skeleton.angles[std::size_t(j)] == 0.0 || inA.I(base) < 0)
+        if (base < 0 || skeleton.angles[std::size_t(j)] == 0.0 || !inShape(base) ||
+            std::size_t(base) >= jointsTrue.size())
             continue;
         for (int tip = 0; tip < n; ++tip) {
-            if (hasChild[std::size_t(tip)] || !below(tip, j) || inA.I(tip) < 0)
+            if (hasChild[std::size_t(tip)] || !below(tip, j) || inA.I(tip) < 0 ||
+                std::size_t(tip) >= jointsTrue.size() || !inShape(tip))
                 continue;
-            const double rest = (joints.row(tip) - joints.row(base)).norm();
-            if (rest < kShortLimb)
+            const auto chordOf = [&](const std::vector<QPointF> &at) {
+                const QPointF d = at[std::size_t(tip)] - at[std::size_t(base)];
+                return std::hypot(d.x(), d.y());
+            };
+            const double half = chordOf(jointsHalf), whole = chordOf(jointsTrue);
+            if (half < kShortLimb || whole < kShortLimb)
                 continue;
             const auto chord = [&](const Eigen::MatrixX2d &at) {
                 return (at.row(tip) - at.row(base)).norm();
             };
             ++limbs;
             if (mid)
-                limb = std::max(limb, 100.0 * std::abs(chord(jointsMid) - rest) / rest);
-            fitLimb = std::max(fitLimb, 100.0 * std::abs(chord(jointsFit) - rest) / rest);
-            naive = std::max(naive, 100.0 * std::abs(chord(jointsNaive) - rest) / rest);
+                limb = std::max(limb, 100.0 * std::abs(chord(jointsMid) - half) / half);
+            fitLimb = std::max(fitLimb, 100.0 * std::abs(chord(jointsFit) - whole) / whole);
+            naive = std::max(naive, 100.0 * std::abs(chord(jointsNaive) - half) / half);
         }
     }
     // A correspondence pin on A's worst point at its true place, then dragged 2 px at a time:
