@@ -211,9 +211,19 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
         detail::coarseAlignment(source, target, pins, options, r.coarse.chamfer, &unturned);
     r.coarse.linear = start.linear;
     r.coarse.translation = start.translation;
-    // From a rigid placement (and, with a skeleton, A's parts turned from it), the stages.
-    const auto fitFrom = [&](const detail::Similarity &rigid,
-                             std::optional<detail::ArticulatedStart> articulated) {
+    // A start: a rigid placement (and, with a skeleton, A's parts turned from it) and the
+    // first, stiffest stage from it; then the other stages.
+    struct Run {
+        FitState state;
+        RigidFitResult fit;
+    };
+    const std::size_t firstStages = std::min<std::size_t>(1, options.stiffness.size());
+    const std::vector<double> first(options.stiffness.begin(),
+                                    options.stiffness.begin() + std::ptrdiff_t(firstStages));
+    const std::vector<double> later(options.stiffness.begin() + std::ptrdiff_t(firstStages),
+                                    options.stiffness.end());
+    const auto begin = [&](const detail::Similarity &rigid,
+                           std::optional<detail::ArticulatedStart> articulated) {
         const double scale = std::sqrt(std::abs(rigid.linear.determinant()));
         const Complex rotation =
             std::polar(1.0, std::atan2(rigid.linear(1, 0) - rigid.linear(0, 1),
@@ -222,16 +232,23 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
             articulated
                 ? detail::articulatedStart(source, target, rigid, skeleton, options, *articulated)
                 : rigid.apply(source.V);
-        RigidFitResult fit = r;
-        FitState state = stateFrom(U0, source.F.rows(), rotation, options.allowScale ? scale : 1.0);
-        runStages(source, target, pins, options, options.stiffness, options.stageIterations, state,
-                  fit);
-        detail::reportResidual(source, target, options, fit);
-        return fit;
+        Run run{stateFrom(U0, source.F.rows(), rotation, options.allowScale ? scale : 1.0), r};
+        runStages(source, target, pins, options, first, options.stageIterations, run.state,
+                  run.fit);
+        detail::reportResidual(source, target, options, run.fit);
+        return run;
+    };
+    const auto finish = [&](Run run) {
+        if (run.fit.status == FitStatus::Fitted && !later.empty()) {
+            runStages(source, target, pins, options, later, options.stageIterations, run.state,
+                      run.fit);
+            detail::reportResidual(source, target, options, run.fit);
+        }
+        return std::move(run.fit);
     };
     const detail::Similarity rigid = detail::rigidIcp(source, target, pins, options, start);
     if (skeleton.empty())
-        return fitFrom(rigid, std::nullopt);
+        return finish(begin(rigid, std::nullopt));
     // With A's parts the fit has more than one start, and keeps the fit whose lines lie
     // closest to B's (both ways), the less stretched: the articulated start can turn a part
     // onto the wrong limb of B, and a whole-drawing turn that the moments chose (B's limbs
@@ -242,25 +259,45 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
         return (f.medianResidual + f.coverageMedian) * (1.0 + f.distortion);
     };
     using detail::ArticulatedStart;
-    // The starts are fitted side by side (each fit has its own system and scratch; the source
-    // and target are only read): on two cores the four take about the time of two.
+    // The starts' first stages are run side by side (each has its own system and scratch; the
+    // source and target are only read): on two cores the four take about the time of two.
+    // Then the two that lie closest after it are relaxed, side by side, and the better kept:
+    // the stiff stage already shows which starts put A's parts on the right lines of B, and
+    // the relaxed stages cost as much again as the stiff one.
     const bool turned =
         (unturned.linear - start.linear).norm() > 1e-9 * std::max(1.0, start.linear.norm());
-    std::vector<std::future<RigidFitResult>> others;
+    std::vector<std::future<Run>> others;
     others.push_back(
-        std::async(std::launch::async, [&] { return fitFrom(rigid, ArticulatedStart::Subtrees); }));
-    others.push_back(std::async(std::launch::async,
-                                [&] { return fitFrom(rigid, ArticulatedStart::BodyFirst); }));
+        std::async(std::launch::async, [&] { return begin(rigid, ArticulatedStart::Subtrees); }));
+    others.push_back(
+        std::async(std::launch::async, [&] { return begin(rigid, ArticulatedStart::BodyFirst); }));
     if (turned)
         others.push_back(std::async(std::launch::async, [&] {
-            return fitFrom(detail::rigidIcp(source, target, pins, options, unturned),
-                           ArticulatedStart::Subtrees);
+            return begin(detail::rigidIcp(source, target, pins, options, unturned),
+                         ArticulatedStart::Subtrees);
         }));
-    std::vector<RigidFitResult> fits;
-    fits.push_back(fitFrom(rigid, std::nullopt));
-    for (std::future<RigidFitResult> &other : others)
-        fits.push_back(other.get());
+    std::vector<Run> runs;
+    runs.push_back(begin(rigid, std::nullopt));
+    for (std::future<Run> &other : others)
+        runs.push_back(other.get());
     int iterations = 0;
+    for (const Run &run : runs)
+        iterations += run.fit.iterations;
+    // Closest first; a tie keeps the starts' order (plain, subtrees, body first, unturned).
+    std::stable_sort(runs.begin(), runs.end(),
+                     [&](const Run &a, const Run &b) { return score(a.fit) < score(b.fit); });
+    constexpr std::size_t kRelaxed = 2;
+    runs.resize(std::min(runs.size(), kRelaxed));
+    for (const Run &run : runs)
+        iterations -= run.fit.iterations; // counted again with the later stages'
+    std::vector<std::future<RigidFitResult>> relaxing;
+    for (std::size_t i = 1; i < runs.size(); ++i)
+        relaxing.push_back(
+            std::async(std::launch::async, [&, i] { return finish(std::move(runs[i])); }));
+    std::vector<RigidFitResult> fits;
+    fits.push_back(finish(std::move(runs[0])));
+    for (std::future<RigidFitResult> &other : relaxing)
+        fits.push_back(other.get());
     std::size_t best = 0;
     for (std::size_t i = 0; i < fits.size(); ++i) {
         iterations += fits[i].iterations;

@@ -164,10 +164,11 @@ struct FitSkeleton {
 // samples best on B (the sum of distances to the nearest agreeing B point, each capped at 5 %
 // of B's diagonal; a bone with under 6 samples of its own is judged with everything below
 // it). The ARAP stages start from those turned parts (each vertex moved with the bone nearest
-// it). Such a start can also put a part on the wrong limb of B, so the stages run from three
-// starts — the rigid alignment, its articulated start, and the articulated start from the
-// unturned placement when the moments chose a turned one — and the fit whose samples and B's
-// points lie closest both ways (the sum of the two medians, times 1 + distortion) is kept.
+// it). Such a start can also put a part on the wrong limb of B, so the first (stiffest) stage
+// runs from each start — the rigid alignment, its two articulated starts, and the articulated
+// start from the unturned placement when the moments chose a turned one — the two that then
+// lie closest run the other stages, and the fit whose samples and B's points lie closest both
+// ways (the sum of the two medians, times 1 + distortion) is kept.
 // With an empty skeleton this is rigidFit above.
 RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &target,
                         const FitPins &pins, const FitSkeleton &skeleton,
