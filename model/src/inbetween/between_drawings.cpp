@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <future>
 #include <limits>
 #include <map>
 #include <optional>
@@ -217,6 +218,13 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
     if (std::none_of(B.strokes.begin(), B.strokes.end(), inked))
         return finbook::unexpected(BetweenDrawings::tr("The second key has no lines to fit to."));
 
+    // A's automatic skeleton (the articulated start) is built while A is meshed: neither needs
+    // the other, and each takes tens of milliseconds on a large drawing.
+    std::future<Expected<SkeletonRig, QString>> skeletonBuilt;
+    if (options.articulated)
+        skeletonBuilt = std::async(std::launch::async, [&A, closeGap] {
+            return buildSkeletonRig(A, {}, std::nullopt, closeGap);
+        });
     const auto meshed = meshObject(MeshKey::of(A, closeGap));
     if (!meshed)
         return finbook::unexpected(
@@ -318,8 +326,8 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
 
     const between::FitPins fitPins = fitPinsOf(pins, V, F);
     between::FitSkeleton &skeleton = fit->skeleton;
-    if (options.articulated)
-        if (const auto built = buildSkeletonRig(A, {}, std::nullopt, closeGap)) {
+    if (skeletonBuilt.valid())
+        if (const auto built = skeletonBuilt.get()) {
             for (const QPointF &j : built->joints)
                 skeleton.joints.emplace_back(j.x(), j.y());
             skeleton.parent = built->parent;
