@@ -17,6 +17,10 @@ using detail::Complex;
 // (a stroke group's separate lobe far from B) and changes a converged fit by nothing.
 constexpr double kProximalWeight = 1e-4;
 
+// Two starts' fits whose scores (rigidFit) differ by less than this share lie as close as
+// each other.
+constexpr double kTie = 0.01;
+
 // The state of the iterations: vertex positions x+iy, a rotation per triangle, one scale.
 struct FitState {
     Eigen::VectorXcd u;
@@ -239,7 +243,7 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
         return run;
     };
     const auto finish = [&](Run run) {
-        if (run.fit.status == FitStatus::Fitted && !later.empty()) {
+        if (run.fit.status != FitStatus::SolveFailed && !later.empty()) {
             runStages(source, target, pins, options, later, options.stageIterations, run.state,
                       run.fit);
             detail::reportResidual(source, target, options, run.fit);
@@ -283,9 +287,18 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
     int iterations = 0;
     for (const Run &run : runs)
         iterations += run.fit.iterations;
-    // Closest first; a tie keeps the starts' order (plain, subtrees, body first, unturned).
-    std::stable_sort(runs.begin(), runs.end(),
-                     [&](const Run &a, const Run &b) { return score(a.fit) < score(b.fit); });
+    // Closest first. Scores within kTie of the best are a tie, kept in the starts' order
+    // (plain, subtrees, body first, unturned): a symmetric shape lies as close with a part
+    // turned over as without, and only the plainer start has it the right way round.
+    double closest = std::numeric_limits<double>::infinity();
+    for (const Run &run : runs)
+        closest = std::min(closest, score(run.fit));
+    const auto tied = [&](const Run &run) { return score(run.fit) <= closest * (1.0 + kTie); };
+    std::stable_sort(runs.begin(), runs.end(), [&](const Run &a, const Run &b) {
+        if (tied(a) || tied(b))
+            return tied(a) && !tied(b);
+        return score(a.fit) < score(b.fit);
+    });
     constexpr std::size_t kRelaxed = 2;
     runs.resize(std::min(runs.size(), kRelaxed));
     for (const Run &run : runs)
@@ -298,10 +311,10 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
     fits.push_back(finish(std::move(runs[0])));
     for (std::future<RigidFitResult> &other : relaxing)
         fits.push_back(other.get());
-    std::size_t best = 0;
+    std::size_t best = 0; // the earlier start unless a later one is closer by more than kTie
     for (std::size_t i = 0; i < fits.size(); ++i) {
         iterations += fits[i].iterations;
-        if (score(fits[i]) < score(fits[best]))
+        if (score(fits[i]) < score(fits[best]) * (1.0 - kTie))
             best = i;
     }
     fits[best].iterations = iterations;
