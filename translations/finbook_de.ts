@@ -4,53 +4,58 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="216"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="229"/>
         <source>The first key has no lines to carry.</source>
         <translation>Das erste Schlüsselbild hat keine Linien, die sich übertragen lassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="218"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="122"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="231"/>
         <source>The second key has no lines to fit to.</source>
         <translation>Das zweite Schlüsselbild hat keine Linien, an die sich anpassen ließe.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="223"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="243"/>
         <source>The first key could not be meshed: %1</source>
         <translation>Das erste Schlüsselbild ließ sich nicht vernetzen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="259"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="279"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>Die Linien des ersten Schlüsselbilds sind Punkte: Es gibt nichts anzupassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="271"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="291"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>Das Netz des ersten Schlüsselbilds lässt sich nicht anpassen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="89"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>Die Linien des ersten Schlüsselbilds um (%1, %2), %3 × %4 px, finden im zweiten nichts Ähnliches.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="98"/>
+        <source>The first key&apos;s drawing cannot be laid on all of the second&apos;s: its lines around (%1, %2), %3 × %4 px (%5 % of them), have nothing of the first key on them. Draw a key between them, or draw the second closer to the first.</source>
+        <translation>Die Zeichnung des ersten Schlüsselbilds lässt sich nicht auf die ganze zweite legen: Deren Linien um (%1, %2), %3 × %4 px (%5 % davon), haben nichts vom ersten Schlüsselbild auf sich. Zeichnen Sie ein Schlüsselbild dazwischen oder das zweite näher am ersten.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>Die beiden Zeichnungen sind zu verschieden, um eine auf die andere anzupassen (im Median %1 % der Zeichnung entfernt, %2 % gedehnt).%3 Zeichnen Sie ein Schlüsselbild dazwischen oder das zweite näher am ersten.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="120"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>Ein Zuordnungspin liegt nicht auf der Zeichnung des ersten Schlüsselbilds.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="124"/>
         <source>The fit could not be solved.</source>
         <translation>Die Anpassung ließ sich nicht lösen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="139"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>Die angepasste Bewegung lässt sich nicht interpolieren: %1</translation>
     </message>
@@ -573,7 +578,7 @@
         <translation>Bild importieren</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/uncovered_lines.cpp" line="279"/>
+        <location filename="../model/src/fill/uncovered_lines.cpp" line="266"/>
         <source>Show Lines</source>
         <translation>Linien zeigen</translation>
     </message>
@@ -6124,125 +6129,125 @@
         <translation>Palette zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="174"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="192"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="196"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="214"/>
         <source>A palette holds at most %1 colours.</source>
         <translation>Eine Palette fasst höchstens %1 Farben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="201"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="219"/>
         <source>Add Swatch</source>
         <translation>Farbfeld hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="212"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="230"/>
         <source>Recolour Swatch</source>
         <translation>Farbfeld umfärben</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="222"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="240"/>
         <source>Delete Swatch</source>
         <translation>Farbfeld löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="233"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="270"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="251"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="288"/>
         <source>Move Swatch</source>
         <translation>Farbfeld verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="244"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="262"/>
         <source>Rename Swatch</source>
         <translation>Farbfeld umbenennen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="320"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="338"/>
         <source>it is far larger than a palette</source>
         <translation>sie ist weit größer als eine Palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="329"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="392"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="347"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="410"/>
         <source>Import Palette</source>
         <translation>Palette importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="336"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="358"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="354"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="376"/>
         <source>The palette could not be saved as &quot;%1&quot;: %2</source>
         <translation>Die Palette konnte nicht als &quot;%1&quot; gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="350"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="368"/>
         <source>A user palette needs a name.</source>
         <translation>Eine Benutzerpalette braucht einen Namen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="370"/>
         <source>The folder for user palettes (%1) could not be made.</source>
         <translation>Der Ordner für Benutzerpaletten (%1) konnte nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="373"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="391"/>
         <source>(no user palettes yet)</source>
         <translation>(noch keine Benutzerpaletten)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="398"/>
         <source>Load Palette</source>
         <translation>Palette laden</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="404"/>
         <source>Import GIMP Palette</source>
         <translation>GIMP-Palette importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="387"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="405"/>
         <source>GIMP palettes (*.gpl);;All files (*)</source>
         <translation>GIMP-Paletten (*.gpl);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="397"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
         <source>Export GIMP Palette</source>
         <translation>GIMP-Palette exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="399"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="417"/>
         <source>GIMP palettes (*.gpl)</source>
         <translation>GIMP-Paletten (*.gpl)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="406"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="424"/>
         <source>Export Palette</source>
         <translation>Palette exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="408"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="426"/>
         <source>Palette saved as &quot;%1&quot;.</source>
         <translation>Palette als &quot;%1&quot; gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="433"/>
         <source>Save as User Palette</source>
         <translation>Als Benutzerpalette speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="433"/>
         <source>Name of the palette:</source>
         <translation>Name der Palette:</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="421"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="439"/>
         <source>Save Palette</source>
         <translation>Palette speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="423"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="441"/>
         <source>Saved as the user palette &quot;%1&quot;; Palette &gt; Load User Palette brings it into any drawing.</source>
         <translation>Als Benutzerpalette &quot;%1&quot; gespeichert; Palette &gt; Benutzerpalette laden bringt sie in jede Zeichnung.</translation>
     </message>

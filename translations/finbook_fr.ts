@@ -4,53 +4,58 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="216"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="229"/>
         <source>The first key has no lines to carry.</source>
         <translation>La première clé n’a aucune ligne à transporter.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="218"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="122"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="231"/>
         <source>The second key has no lines to fit to.</source>
         <translation>La seconde clé n’a aucune ligne sur laquelle ajuster.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="223"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="243"/>
         <source>The first key could not be meshed: %1</source>
         <translation>La première clé n’a pas pu être maillée : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="259"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="279"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>Les lignes de la première clé sont des points : il n’y a rien à ajuster.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="271"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="291"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>Le maillage de la première clé ne peut pas être ajusté : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="89"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>Les lignes de la première clé autour de (%1, %2), %3 × %4 px, ne trouvent rien de semblable dans la seconde.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="98"/>
+        <source>The first key&apos;s drawing cannot be laid on all of the second&apos;s: its lines around (%1, %2), %3 × %4 px (%5 % of them), have nothing of the first key on them. Draw a key between them, or draw the second closer to the first.</source>
+        <translation>Le dessin de la première clé ne se pose pas sur tout le second : ses lignes autour de (%1, %2), %3 × %4 px (%5 % d’entre elles), n’ont rien de la première clé sur elles. Dessinez une clé entre les deux, ou dessinez la seconde plus proche de la première.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>Les deux dessins sont trop différents pour ajuster l’un sur l’autre (à %1 % du dessin en médiane, étiré de %2 %).%3 Dessinez une clé entre les deux, ou la seconde plus proche de la première.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="120"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>Une épingle de correspondance n’est pas sur le dessin de la première clé.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="124"/>
         <source>The fit could not be solved.</source>
         <translation>L’ajustement n’a pas pu être résolu.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="139"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>Le mouvement ajusté ne peut pas être interpolé : %1</translation>
     </message>
@@ -573,7 +578,7 @@
         <translation>Importer une image</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/uncovered_lines.cpp" line="279"/>
+        <location filename="../model/src/fill/uncovered_lines.cpp" line="266"/>
         <source>Show Lines</source>
         <translation>Afficher les traits</translation>
     </message>
@@ -6124,125 +6129,125 @@
         <translation>Réinitialiser la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="174"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="192"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="196"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="214"/>
         <source>A palette holds at most %1 colours.</source>
         <translation>Une palette contient au plus %1 couleurs.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="201"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="219"/>
         <source>Add Swatch</source>
         <translation>Ajouter une nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="212"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="230"/>
         <source>Recolour Swatch</source>
         <translation>Recolorer la nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="222"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="240"/>
         <source>Delete Swatch</source>
         <translation>Supprimer la nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="233"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="270"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="251"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="288"/>
         <source>Move Swatch</source>
         <translation>Déplacer la nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="244"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="262"/>
         <source>Rename Swatch</source>
         <translation>Renommer la nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="320"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="338"/>
         <source>it is far larger than a palette</source>
         <translation>il est bien plus gros qu&apos;une palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="329"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="392"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="347"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="410"/>
         <source>Import Palette</source>
         <translation>Importer la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="336"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="358"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="354"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="376"/>
         <source>The palette could not be saved as &quot;%1&quot;: %2</source>
         <translation>La palette n&apos;a pas pu être enregistrée sous « %1 » : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="350"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="368"/>
         <source>A user palette needs a name.</source>
         <translation>Une palette personnelle a besoin d&apos;un nom.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="370"/>
         <source>The folder for user palettes (%1) could not be made.</source>
         <translation>Le dossier des palettes personnelles (%1) n&apos;a pas pu être créé.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="373"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="391"/>
         <source>(no user palettes yet)</source>
         <translation>(pas encore de palette personnelle)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="398"/>
         <source>Load Palette</source>
         <translation>Charger la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="404"/>
         <source>Import GIMP Palette</source>
         <translation>Importer une palette GIMP</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="387"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="405"/>
         <source>GIMP palettes (*.gpl);;All files (*)</source>
         <translation>Palettes GIMP (*.gpl);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="397"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
         <source>Export GIMP Palette</source>
         <translation>Exporter une palette GIMP</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="399"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="417"/>
         <source>GIMP palettes (*.gpl)</source>
         <translation>Palettes GIMP (*.gpl)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="406"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="424"/>
         <source>Export Palette</source>
         <translation>Exporter la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="408"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="426"/>
         <source>Palette saved as &quot;%1&quot;.</source>
         <translation>Palette enregistrée sous « %1 ».</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="433"/>
         <source>Save as User Palette</source>
         <translation>Enregistrer comme palette personnelle</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="433"/>
         <source>Name of the palette:</source>
         <translation>Nom de la palette :</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="421"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="439"/>
         <source>Save Palette</source>
         <translation>Enregistrer la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="423"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="441"/>
         <source>Saved as the user palette &quot;%1&quot;; Palette &gt; Load User Palette brings it into any drawing.</source>
         <translation>Enregistrée comme palette personnelle « %1 » ; Palette &gt; Charger une palette personnelle l&apos;amène dans tout dessin.</translation>
     </message>

@@ -4,53 +4,58 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="216"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="229"/>
         <source>The first key has no lines to carry.</source>
         <translation>最初のキーには運ぶ線がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="218"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="122"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="231"/>
         <source>The second key has no lines to fit to.</source>
         <translation>二番目のキーには合わせる線がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="223"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="243"/>
         <source>The first key could not be meshed: %1</source>
         <translation>最初のキーをメッシュにできませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="259"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="279"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>最初のキーの線は点だけです。合わせるものがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="271"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="291"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>最初のキーのメッシュを合わせられません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="89"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>最初のキーの (%1, %2) 付近、%3 × %4 px の線に似たものが二番目のキーにありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="98"/>
+        <source>The first key&apos;s drawing cannot be laid on all of the second&apos;s: its lines around (%1, %2), %3 × %4 px (%5 % of them), have nothing of the first key on them. Draw a key between them, or draw the second closer to the first.</source>
+        <translation>最初のキーの絵を二番目の絵全体に重ねられません。二番目の (%1, %2) 付近、%3 × %4 px の線（全体の %5 %）には最初のキーのどこも重なりません。間にキーを描くか、二番目を最初に近づけて描いてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>二つの絵が違いすぎて、一方を他方に合わせられません (中央値で絵の %1 % 離れ、%2 % 伸びています)。%3 間にキーを描くか、二番目を最初に近づけて描いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="120"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>対応ピンが最初のキーの絵の上にありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="124"/>
         <source>The fit could not be solved.</source>
         <translation>合わせ込みを解けませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="139"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>合わせた動きを補間できません: %1</translation>
     </message>
@@ -573,7 +578,7 @@
         <translation>画像を読み込む</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/uncovered_lines.cpp" line="279"/>
+        <location filename="../model/src/fill/uncovered_lines.cpp" line="266"/>
         <source>Show Lines</source>
         <translation>線を表示</translation>
     </message>
@@ -6103,125 +6108,125 @@
         <translation>パレットをリセット</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="174"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="192"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="196"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="214"/>
         <source>A palette holds at most %1 colours.</source>
         <translation>パレットに入る色は最大 %1 色です。</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="201"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="219"/>
         <source>Add Swatch</source>
         <translation>色見本を追加</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="212"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="230"/>
         <source>Recolour Swatch</source>
         <translation>色見本の色を変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="222"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="240"/>
         <source>Delete Swatch</source>
         <translation>色見本を削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="233"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="270"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="251"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="288"/>
         <source>Move Swatch</source>
         <translation>色見本を移動</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="244"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="262"/>
         <source>Rename Swatch</source>
         <translation>色見本の名前を変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="320"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="338"/>
         <source>it is far larger than a palette</source>
         <translation>パレットにしては大きすぎます</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="329"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="392"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="347"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="410"/>
         <source>Import Palette</source>
         <translation>パレットを読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="336"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="358"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="354"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="376"/>
         <source>The palette could not be saved as &quot;%1&quot;: %2</source>
         <translation>パレットを &quot;%1&quot; として保存できませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="350"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="368"/>
         <source>A user palette needs a name.</source>
         <translation>ユーザーパレットには名前が必要です。</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="370"/>
         <source>The folder for user palettes (%1) could not be made.</source>
         <translation>ユーザーパレットのフォルダ（%1）を作れませんでした。</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="373"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="391"/>
         <source>(no user palettes yet)</source>
         <translation>（ユーザーパレットはまだありません）</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="398"/>
         <source>Load Palette</source>
         <translation>パレットを読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="404"/>
         <source>Import GIMP Palette</source>
         <translation>GIMP パレットを読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="387"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="405"/>
         <source>GIMP palettes (*.gpl);;All files (*)</source>
         <translation>GIMP パレット (*.gpl);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="397"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
         <source>Export GIMP Palette</source>
         <translation>GIMP パレットを書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="399"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="417"/>
         <source>GIMP palettes (*.gpl)</source>
         <translation>GIMP パレット (*.gpl)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="406"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="424"/>
         <source>Export Palette</source>
         <translation>パレットを書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="408"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="426"/>
         <source>Palette saved as &quot;%1&quot;.</source>
         <translation>パレットを &quot;%1&quot; として保存しました。</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="433"/>
         <source>Save as User Palette</source>
         <translation>ユーザーパレットとして保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="433"/>
         <source>Name of the palette:</source>
         <translation>パレットの名前:</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="421"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="439"/>
         <source>Save Palette</source>
         <translation>パレットを保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="423"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="441"/>
         <source>Saved as the user palette &quot;%1&quot;; Palette &gt; Load User Palette brings it into any drawing.</source>
         <translation>ユーザーパレット &quot;%1&quot; として保存しました。パレット &gt; ユーザーパレットを読み込む で、どの絵にも使えます。</translation>
     </message>

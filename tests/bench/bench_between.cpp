@@ -18,6 +18,8 @@
 //   fit_ms: the whole fit (mesh, skeleton, precompute, fit from its starts, interpolation's
 //     precompute); inbetween_ms: one in-between's drawing (t = 0.5: strokes carried, fills tied
 //     as Apply Pose ties them); fills_kept: it has as many fills as A; vertices;
+//   uncovered_pct: B's points farther than 5 % of B's diagonal from every fitted point of A (a
+//     part of B the fit did not reach; above 7.5 % the fit is refused, and the row says why);
 //   pin_ms: a correspondence pin put on A's worst-fitted point at its true place and dragged
 //     2 px at a time, the live refit's time (median of 5); worst_point_pct and
 //     worst_point_pinned_pct: that point's error before and with the pin.
@@ -351,6 +353,7 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     row.insert(QStringLiteral("pin_ms"), pinMs.empty() ? -1.0 : bench::percentile(pinMs, 0.5));
     row.insert(QStringLiteral("fills_kept"), int(midDrawing.fills.size()) == int(a.fills.size()));
     row.insert(QStringLiteral("distortion"), fit.fit.distortion);
+    row.insert(QStringLiteral("uncovered_pct"), 100.0 * fit.fit.uncoveredShare);
     print();
     summary.median.push_back(median);
     summary.p95.push_back(p95);

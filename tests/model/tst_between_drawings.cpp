@@ -12,6 +12,7 @@
 #include <finbook/model/inbetween/between_drawings.h>
 #include <finbook/model/inbetween/inbetween_commands.h>
 
+#include <QRegularExpression>
 #include <QTest>
 #include <QtMath>
 
@@ -136,6 +137,51 @@ QPointF pointOf(const StrokePoint &p)
     return {p.x, p.y};
 }
 
+// A character as drawn in the app: a body, a head and two arms, each a closed line of its own,
+// the arms' tops drawn over the body's outline; the right arm from its shoulder to
+// `rightHand`. `spacing` is the pen's point spacing, `phase` where round each loop it starts.
+std::vector<QPointF> ellipseLine(QPointF c, double rx, double ry, double spacing, double phase)
+{
+    const int n = std::max(12, int(std::ceil(2.0 * std::numbers::pi * std::max(rx, ry) / spacing)));
+    std::vector<QPointF> out;
+    for (int i = 0; i <= n; ++i) {
+        const double a = phase + 2.0 * std::numbers::pi * i / n;
+        out.emplace_back(c.x() + rx * std::cos(a), c.y() + ry * std::sin(a));
+    }
+    return out;
+}
+
+std::vector<QPointF> capsuleLine(QPointF a, QPointF b, double halfWidth, double spacing)
+{
+    const QPointF d = b - a;
+    const QPointF u = d / std::hypot(d.x(), d.y()), n(-u.y(), u.x());
+    std::vector<QPointF> corners = {a + n * halfWidth};
+    for (int i = 0; i <= 8; ++i) {
+        const double t = std::numbers::pi * i / 8;
+        corners.push_back(b + n * (halfWidth * std::cos(t)) + u * (halfWidth * std::sin(t)));
+    }
+    corners.push_back(a - n * halfWidth);
+    return around(corners, spacing);
+}
+
+const QPointF kRightShoulder(772, 400);
+
+StrokeGroup character(QPointF rightHand, double spacing, double phase, Id firstId)
+{
+    StrokeGroup g;
+    g.id = firstId;
+    g.name = QStringLiteral("Character");
+    const std::vector<std::vector<QPointF>> lines = {
+        ellipseLine({720, 470}, 60, 100, spacing, phase),
+        ellipseLine({720, 318}, 46, 48, spacing, phase + 1.0),
+        capsuleLine({668, 400}, {610, 560}, 14, spacing),
+        capsuleLine(kRightShoulder, rightHand, 14, spacing)};
+    Id next = firstId + 1;
+    for (const auto &line : lines)
+        g.strokes.push_back(Stroke{next++, strokeThrough(line)});
+    return g;
+}
+
 } // namespace
 
 class TestBetweenDrawings : public QObject {
@@ -147,6 +193,8 @@ private slots:
     void reversedAndShuffledLinesGiveTheSameFit();
     void correspondencePinsMoveTheFit();
     void drawingsThatDoNotFitAreRefusedWithAReason();
+    void anArmTheFitCannotSwingIsRefusedWhereBShowsIt_data();
+    void anArmTheFitCannotSwingIsRefusedWhereBShowsIt();
     void inbetweensStartOnAAndLandOnB();
     void generatedInbetweensAreOneUndoStep();
 };
@@ -304,6 +352,37 @@ void TestBetweenDrawings::drawingsThatDoNotFitAreRefusedWithAReason()
         planInbetweens(doc.frameAt(0), doc.frameAt(1), {0.5}, TargetPath::Arc, fits.fits);
     QVERIFY(std::none_of(plan.objects.begin(), plan.objects.end(),
                          [](const auto &o) { return o.fate == ObjectFate::Fitted; }));
+}
+
+void TestBetweenDrawings::anArmTheFitCannotSwingIsRefusedWhereBShowsIt_data()
+{
+    QTest::addColumn<QPointF>("hand");
+    QTest::newRow("out to the side (65°)") << QPointF(925, 385);
+    QTest::newRow("raised (120°)") << QPointF(880, 270);
+}
+
+void TestBetweenDrawings::anArmTheFitCannotSwingIsRefusedWhereBShowsIt()
+{
+    // Found in the app: a character drawn with both arms down, their tops over the body, and
+    // drawn again with the right arm out or raised. A's mesh is the union of what was drawn, so
+    // the arm is joined to the body along its top and no fit as rigid as possible swings it
+    // free: the fit lays A's arm along the body, and its in-betweens crumpled the arm. Such a
+    // fit is refused, and the message names where B's arm is.
+    QFETCH(QPointF, hand);
+    const StrokeGroup a = character({830, 560}, 3.0, 0.0, 1);
+    const StrokeGroup b = character(hand, 4.1, 2.0, 100);
+    const auto made = fitDrawings(a, b, -1.0);
+    QVERIFY(!made);
+    qInfo("%s", qPrintable(made.error()));
+    const QRegularExpressionMatch at =
+        QRegularExpression(QStringLiteral("around \\((\\d+), (\\d+)\\)")).match(made.error());
+    QVERIFY2(at.hasMatch(), qPrintable(made.error()));
+    const QPointF centre(at.captured(1).toDouble(), at.captured(2).toDouble());
+    QRectF arm;
+    for (const StrokePoint &p : b.strokes[3].data->points)
+        arm = arm.united(QRectF(p.x, p.y, 0.01, 0.01));
+    QVERIFY2(arm.adjusted(-10, -10, 10, 10).contains(centre),
+             qPrintable(QStringLiteral("(%1, %2)").arg(centre.x()).arg(centre.y())));
 }
 
 void TestBetweenDrawings::inbetweensStartOnAAndLandOnB()

@@ -214,6 +214,7 @@ void reportResidual(const RigidFitSource &source, const RigidFitTarget &target,
     const int k = source.sampleCount();
     const double diagonal = std::max(target.diagonal, 1e-12);
     r.targetDiagonal = target.diagonal;
+    r.partUncovered = false;
     r.samples = samplePositions(source, r.U);
     r.residual.resize(k);
     for (int s = 0; s < k; ++s) {
@@ -235,6 +236,15 @@ void reportResidual(const RigidFitSource &source, const RigidFitTarget &target,
         fitted.nearest(target.P.row(i).transpose(), Eigen::Vector2d::Zero(), 0.0, d);
         coverage[std::size_t(i)] = std::isfinite(d) ? d : diagonal;
     }
+    const double far = options.failMedian * diagonal;
+    r.uncoveredRegion.setEmpty();
+    int uncovered = 0;
+    for (Eigen::Index i = 0; i < target.P.rows(); ++i)
+        if (coverage[std::size_t(i)] > far) {
+            ++uncovered;
+            r.uncoveredRegion.extend(Eigen::Vector2d(target.P.row(i).transpose()));
+        }
+    r.uncoveredShare = target.P.rows() > 0 ? double(uncovered) / double(target.P.rows()) : 0.0;
     r.coverageMedian = percentileOf(coverage, 0.5);
 
     std::vector<int> order(static_cast<std::size_t>(k));
@@ -267,6 +277,16 @@ void reportResidual(const RigidFitSource &source, const RigidFitTarget &target,
                     " %); worst between (" + std::to_string(int(lo.x())) + ", " +
                     std::to_string(int(lo.y())) + ") and (" + std::to_string(int(hi.x())) + ", " +
                     std::to_string(int(hi.y())) + ") of A";
+    }
+    if (r.status == FitStatus::Fitted && r.uncoveredShare > options.failUncovered) {
+        r.status = FitStatus::ResidualTooLarge;
+        r.partUncovered = true;
+        const Eigen::Vector2d lo = r.uncoveredRegion.min(), hi = r.uncoveredRegion.max();
+        r.message = std::to_string(int(std::lround(100.0 * r.uncoveredShare))) +
+                    " % of B's points have nothing of A near them, between (" +
+                    std::to_string(int(lo.x())) + ", " + std::to_string(int(lo.y())) + ") and (" +
+                    std::to_string(int(hi.x())) + ", " + std::to_string(int(hi.y())) +
+                    ") of B: a part of B that A's could not reach";
     }
 }
 

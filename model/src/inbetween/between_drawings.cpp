@@ -93,6 +93,18 @@ QString failure(const deform::between::RigidFitResult &r)
                  .arg(qRound(where.center().y()))
                  .arg(qRound(where.sizes().x()))
                  .arg(qRound(where.sizes().y()));
+    if (r.status == between::FitStatus::ResidualTooLarge && r.partUncovered) {
+        const Eigen::AlignedBox2d &part = r.uncoveredRegion;
+        return BetweenDrawings::tr(
+                   "The first key's drawing cannot be laid on all of the second's: its lines "
+                   "around (%1, %2), %3 × %4 px (%5 % of them), have nothing of the first key "
+                   "on them. Draw a key between them, or draw the second closer to the first.")
+            .arg(qRound(part.center().x()))
+            .arg(qRound(part.center().y()))
+            .arg(qRound(part.sizes().x()))
+            .arg(qRound(part.sizes().y()))
+            .arg(qRound(100.0 * r.uncoveredShare));
+    }
     switch (r.status) {
     case between::FitStatus::ResidualTooLarge:
         return BetweenDrawings::tr(
