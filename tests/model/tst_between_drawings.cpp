@@ -359,6 +359,7 @@ void TestBetweenDrawings::anArmTheFitCannotSwingIsRefusedWhereBShowsIt_data()
     QTest::addColumn<QPointF>("hand");
     QTest::newRow("out to the side (65°)") << QPointF(925, 385);
     QTest::newRow("raised (120°)") << QPointF(880, 270);
+    QTest::newRow("drawn in the app") << QPointF(); // tests/data/between_arm_out.finbook
 }
 
 void TestBetweenDrawings::anArmTheFitCannotSwingIsRefusedWhereBShowsIt()
@@ -369,9 +370,21 @@ void TestBetweenDrawings::anArmTheFitCannotSwingIsRefusedWhereBShowsIt()
     // free: the fit lays A's arm along the body, and its in-betweens crumpled the arm. Such a
     // fit is refused, and the message names where B's arm is.
     QFETCH(QPointF, hand);
-    const StrokeGroup a = character({830, 560}, 3.0, 0.0, 1);
-    const StrokeGroup b = character(hand, 4.1, 2.0, 100);
-    const auto made = fitDrawings(a, b, -1.0);
+    StrokeGroup a, b;
+    double closeGap = -1.0;
+    if (hand.isNull()) { // the same drawn with the pen, filled, on frames 1 and 2
+        const auto loaded =
+            loadFinbook(QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/between_arm_out.finbook"));
+        QVERIFY(loaded && loaded->frames.size() == 2);
+        a = loaded->frames[0].groups.at(0);
+        b = loaded->frames[1].groups.at(0);
+        closeGap = loaded->settings.closeGap;
+        QCOMPARE(b.strokes.size(), std::size_t(4));
+    } else {
+        a = character({830, 560}, 3.0, 0.0, 1);
+        b = character(hand, 4.1, 2.0, 100);
+    }
+    const auto made = fitDrawings(a, b, closeGap);
     QVERIFY(!made);
     qInfo("%s", qPrintable(made.error()));
     const QRegularExpressionMatch at =

@@ -278,7 +278,9 @@ void reportResidual(const RigidFitSource &source, const RigidFitTarget &target,
                     std::to_string(int(lo.y())) + ") and (" + std::to_string(int(hi.x())) + ", " +
                     std::to_string(int(hi.y())) + ") of A";
     }
-    if (r.status == FitStatus::Fitted && r.uncoveredShare > options.failUncovered) {
+    if (r.status == FitStatus::Fitted && (r.uncoveredShare > options.failUncovered ||
+                                          (r.uncoveredShare > options.failUncoveredStrained &&
+                                           r.distortion > options.strainedDistortion))) {
         r.status = FitStatus::ResidualTooLarge;
         r.partUncovered = true;
         const Eigen::Vector2d lo = r.uncoveredRegion.min(), hi = r.uncoveredRegion.max();
