@@ -66,6 +66,10 @@ InbetweenDialog::InbetweenDialog(model::Document *document, model::Id firstKey, 
     m_objects = new QListWidget(this);
     m_objects->setObjectName(QStringLiteral("inbetweenObjects"));
     m_objects->setSelectionMode(QAbstractItemView::NoSelection);
+    // A fit that failed says why and where in a sentence or two: wrapped, not cut off.
+    m_objects->setWordWrap(true);
+    m_objects->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_objects->setResizeMode(QListView::Adjust);
     layout->addWidget(new QLabel(tr("Objects:"), this));
     layout->addWidget(m_objects);
     // The fit of a drawing carried onto another, with its correspondence pins.
