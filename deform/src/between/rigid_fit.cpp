@@ -257,10 +257,15 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
     // closest to B's (both ways), the less stretched: the articulated start can turn a part
     // onto the wrong limb of B, and a whole-drawing turn that the moments chose (B's limbs
     // posed otherwise move its axes) can be worse than none.
-    const auto score = [](const RigidFitResult &f) {
+    // The medians do not see a part of B that nothing of A reached (an arm B shows raised that
+    // a start left hanging): each such point of B counts as far as the distance that makes it
+    // uncovered.
+    const double far = options.failMedian * std::max(target.diagonal, 1e-12);
+    const auto score = [far](const RigidFitResult &f) {
         if (f.status == FitStatus::SolveFailed)
             return std::numeric_limits<double>::infinity();
-        return (f.medianResidual + f.coverageMedian) * (1.0 + f.distortion);
+        return (f.medianResidual + f.coverageMedian + f.uncoveredShare * far) *
+               (1.0 + f.distortion);
     };
     using detail::ArticulatedStart;
     // The starts' first stages are run side by side (each has its own system and scratch; the
