@@ -182,7 +182,8 @@ struct FitSkeleton {
 // runs from each start — the rigid alignment, its two articulated starts, and the articulated
 // start from the unturned placement when the moments chose a turned one — the two that then
 // lie closest run the other stages, and the fit whose samples and B's points lie closest both
-// ways (the sum of the two medians, times 1 + distortion) is kept.
+// ways (the sum of the two medians and of B's uncovered share times the distance that makes a
+// point uncovered, times 1 + distortion) is kept.
 // With an empty skeleton this is rigidFit above.
 RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &target,
                         const FitPins &pins, const FitSkeleton &skeleton,
