@@ -41,6 +41,7 @@ private slots:
     void okInsertsOneUndoStep();
     void cancelLeavesNothing();
     void differentDrawingsAreCarriedOntoEachOther();
+    void aRefusedFitIsListedOnceWithItsReason();
     void dialogShowsThePreviewAndRemembersItsPlace();
 
 private:
@@ -275,6 +276,37 @@ void TestInbetweenDialog::differentDrawingsAreCarriedOntoEachOther()
     }
     doc->undoStack()->undo();
     QCOMPARE(model::serializeFinbook(*doc), before);
+}
+
+// A drawing the fit refuses (tests/data/between_arm_out.finbook: the arm drawn over the body
+// and swung out in the second key) is one line in the objects list, with why and where, and the
+// in-betweens switch it over half way.
+void TestInbetweenDialog::aRefusedFitIsListedOnceWithItsReason()
+{
+    model::Document *doc = m_window->document();
+    const auto loaded = model::loadFinbook(
+        QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/between_arm_out.finbook"));
+    QVERIFY(loaded && loaded->frames.size() == 2);
+    doc->reset(loaded->frames, loaded->settings, loaded->nextId);
+    QCoreApplication::processEvents();
+    pickKeys();
+    QStringList lines;
+    bool fitted = true, settled = false;
+    const bool driven = runDialog([&](ui::InbetweenDialog *dialog) {
+        // Read, then closed, so that a failing check below does not leave the dialog open.
+        settled = QTest::qWaitFor([dialog] { return !dialog->fitting(); }, 20000);
+        auto *objects = dialog->findChild<QListWidget *>(QStringLiteral("inbetweenObjects"));
+        for (int row = 0; objects && row < objects->count(); ++row)
+            lines << objects->item(row)->text();
+        fitted = !dialog->fits().empty();
+        dialog->reject();
+    });
+    QVERIFY(driven && settled);
+    QCOMPARE(lines.size(), 1);
+    QVERIFY2(lines[0].contains(QStringLiteral("could not be carried")) &&
+                 lines[0].contains(QStringLiteral("nothing of the first key")),
+             qPrintable(lines[0]));
+    QVERIFY(!fitted);
 }
 
 // Issue 22, item 6: the dialog does not cover the page it previews on, the canvas shows the

@@ -338,9 +338,21 @@ void InbetweenDialog::updatePlan()
     // What becomes of each object (no frame planned: cheap); the frame is planned by the worker.
     const model::InbetweenPlan plan = model::planInbetweens(*first, *second, {}, o.path, fits());
     m_objects->clear();
-    for (const model::InbetweenObjectReport &object : plan.objects)
+    const bool carrying = !m_between->isHidden() && m_between->isChecked();
+    const auto refused = [&](int index) {
+        return carrying &&
+               std::any_of(m_fits.failures.begin(), m_fits.failures.end(),
+                           [index](const auto &failure) { return failure.first == index; });
+    };
+    for (const model::InbetweenObjectReport &object : plan.objects) {
+        // A drawing that could not be carried is held in each half, as an object in one key
+        // only; its own line below says so once, and why.
+        if ((object.fate == model::ObjectFate::FirstKeyOnly && refused(object.firstIndex)) ||
+            (object.fate == model::ObjectFate::SecondKeyOnly && refused(object.secondIndex)))
+            continue;
         m_objects->addItem(describe(object));
-    if (!m_between->isHidden() && m_between->isChecked())
+    }
+    if (carrying)
         for (const auto &[index, why] : m_fits.failures)
             m_objects->addItem(tr("%1: could not be carried onto the second key's drawing, so it "
                                   "switches over half way. %2")
