@@ -32,6 +32,7 @@
 
 #include <finbook/deform/between/arap_interpolation.h>
 #include <finbook/geometry/embedding.h>
+#include <finbook/geometry/triangle_locator.h>
 #include <finbook/model/inbetween/between_drawings.h>
 
 #include <QDir>
@@ -252,24 +253,12 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
                 return true;
         return false;
     };
-    // Whether a joint lies in A's shape (in the triangle it is embedded in; embed puts a joint
-    // outside, such as one the skeleton hung between two pieces drawn apart, on the nearest
-    // triangle, which the pose does not move with the joint's bone).
+    // Whether a joint lies in A's shape (embed puts a joint outside, such as one the skeleton
+    // hung between two pieces drawn apart, on the nearest triangle, which the pose does not move
+    // with the joint's bone).
+    const geometry::TriangleLocator locator(V, F);
     const auto inShape = [&](int joint) {
-        const int t = inA.I(joint);
-        if (t < 0)
-            return false;
-        const Eigen::Vector2d p = joints.row(joint).transpose();
-        const Eigen::Vector2d a0 = V.row(F(t, 0)).transpose(), a1 = V.row(F(t, 1)).transpose(),
-                              a2 = V.row(F(t, 2)).transpose();
-        const auto cross = [](const Eigen::Vector2d &u, const Eigen::Vector2d &v) {
-            return u.x() * v.y() - u.y() * v.x();
-        };
-        const double area = cross(a1 - a0, a2 - a0);
-        const double tolerance = 1e-9 * std::max(1.0, std::abs(area));
-        const double w0 = cross(a1 - p, a2 - p) / area, w1 = cross(a2 - p, a0 - p) / area,
-                     w2 = cross(a0 - p, a1 - p) / area;
-        return area != 0.0 && w0 >= -tolerance && w1 >= -tolerance && w2 >= -tolerance;
+        return locator.locate(joints.row(joint).transpose()).inside;
     };
     // The joints carried by the mid in-between, the fit and the straight-line morph.
     const Eigen::MatrixX2d jointsMid = mid ? geometry::applyEmbedding(inA, *mid, F) : joints;
