@@ -100,6 +100,45 @@ double wrapAngle(double a)
     return std::remainder(a, 2.0 * std::numbers::pi);
 }
 
+// A body (100 × 100) and a limb (200 × 40) meshed apart, the limb's left end 10 px over the
+// body's right side, stacked (body first) with one hinge: the body's vertex nearest the middle
+// of the overlap and the limb's nearest that.
+struct HingedPieces {
+    Eigen::MatrixX2d V;
+    Eigen::MatrixX3i F;
+    std::array<int, 2> hinge{};
+    Eigen::Index limbFirstVertex = 0, limbFirstTriangle = 0;
+    int limbTip = 0; // the limb's vertex at the middle of its far end
+
+    HingedPieces()
+    {
+        const test::GridMesh body = test::gridMesh(10, 10, 100.0, 100.0);
+        const test::GridMesh limb =
+            test::gridMesh(20, 4, 200.0, 40.0, 0.0, Eigen::Vector2d(90.0, 30.0));
+        V.resize(body.V.rows() + limb.V.rows(), 2);
+        V << body.V, limb.V;
+        F.resize(body.F.rows() + limb.F.rows(), 3);
+        F << body.F, (limb.F.array() + int(body.V.rows())).matrix();
+        limbFirstVertex = body.V.rows();
+        limbFirstTriangle = body.F.rows();
+        limbTip = int(limbFirstVertex) + limb.vertex(20, 2);
+        Eigen::Index b = 0, l = 0;
+        (body.V.rowwise() - Eigen::RowVector2d(95.0, 50.0)).rowwise().squaredNorm().minCoeff(&b);
+        (limb.V.rowwise() - body.V.row(b)).rowwise().squaredNorm().minCoeff(&l);
+        hinge = {int(b), int(limbFirstVertex + l)};
+    }
+    // The limb turned by `degrees` about its hinge vertex, the body unmoved.
+    Eigen::MatrixX2d limbTurned(double degrees) const
+    {
+        Eigen::MatrixX2d U = V;
+        const Eigen::Vector2d c = V.row(hinge[1]).transpose();
+        const Eigen::Matrix2d R = test::rotationBy(degrees);
+        for (Eigen::Index v = limbFirstVertex; v < V.rows(); ++v)
+            U.row(v) = (R * (V.row(v).transpose() - c) + c).transpose();
+        return U;
+    }
+};
+
 } // namespace
 
 class TestBetweenFit : public QObject {
@@ -118,6 +157,8 @@ private slots:
     void interpolationEndsAreExact();
     void turnedLimbKeepsItsLength();
     void curledLimbTurnsOneWay();
+    void hingedPieceTurnsAboutItsHinge();
+    void hingeHoldsAFittedPiece();
     void limbBeyondAFoldTurnsAsItTurned();
     void pointGridAnswersAsASearchOfEveryPoint();
 };
@@ -572,6 +613,90 @@ void TestBetweenFit::pointGridAnswersAsASearchOfEveryPoint()
             }
         }
     }
+}
+
+void TestBetweenFit::hingedPieceTurnsAboutItsHinge()
+{
+    // A limb meshed apart from the body (drawn over it) and turned 120° about its hinge: with
+    // the hinge linked, the in-between turns it about the hinge, which stays where it is; each
+    // part's centroid moved on its own straight line instead swings the limb's root off the
+    // body (what the interpolation did with no link).
+    const HingedPieces pieces;
+    const Eigen::MatrixX2d V1 = pieces.limbTurned(120.0);
+    const auto linked = arapInterpolationPrecompute(pieces.V, V1, pieces.F, {pieces.hinge});
+    const auto apart = arapInterpolationPrecompute(pieces.V, V1, pieces.F);
+    QVERIFY(linked && apart);
+    const double size = (pieces.V.colwise().maxCoeff() - pieces.V.colwise().minCoeff()).norm();
+    const auto start = arapInterpolate(**linked, 0.0), end = arapInterpolate(**linked, 1.0);
+    QVERIFY(start && end);
+    QVERIFY(maxRowDistance(*start, pieces.V) < 1e-9 * size);
+    QVERIFY(maxRowDistance(*end, V1) < 1e-9 * size);
+    const auto middle = arapInterpolate(**linked, 0.5), loose = arapInterpolate(**apart, 0.5);
+    QVERIFY(middle && loose);
+    const auto [b, l] = pieces.hinge;
+    const Eigen::RowVector2d rest = pieces.V.row(l);
+    QVERIFY2(((*middle).row(l) - rest).norm() < 0.5,
+             qPrintable(QString::number(((*middle).row(l) - rest).norm())));
+    QVERIFY(((*middle).row(b) - pieces.V.row(b)).norm() < 0.5);
+    const double length = (pieces.V.row(pieces.limbTip) - rest).norm();
+    const Eigen::RowVector2d reach = (*middle).row(pieces.limbTip) - (*middle).row(l);
+    QVERIFY2(std::abs(reach.norm() / length - 1.0) < 0.01,
+             qPrintable(QString::number(reach.norm() / length)));
+    const Eigen::RowVector2d restReach = pieces.V.row(pieces.limbTip) - rest;
+    const double turned =
+        std::atan2(restReach.x() * reach.y() - restReach.y() * reach.x(), restReach.dot(reach));
+    QVERIFY2(std::abs(turned * 180.0 / std::numbers::pi - 60.0) < 1.0,
+             qPrintable(QString::number(turned * 180.0 / std::numbers::pi)));
+    // Without the link the limb's root leaves the body (its centroid takes the chord).
+    QVERIFY2(((*loose).row(l) - rest).norm() > 20.0,
+             qPrintable(QString::number(((*loose).row(l) - rest).norm())));
+    // A link to a vertex that does not exist is refused, not read out of range.
+    QVERIFY(!arapInterpolationPrecompute(pieces.V, V1, pieces.F, {{0, int(pieces.V.rows())}}));
+}
+
+void TestBetweenFit::hingeHoldsAFittedPiece()
+{
+    // B: the body's outline, and the limb turned 25° about the hinge, drawn as its two long
+    // sides only (no end drawn): nothing in B says how far along itself the limb lies, so a
+    // limb meshed apart slides along its sides unless the hinge holds it on the body.
+    const HingedPieces pieces;
+    StrokePoints a;
+    a.addRectangle({0.0, 0.0}, {100.0, 100.0}, 2.0);
+    a.addRectangle({90.0, 30.0}, {290.0, 70.0}, 2.0);
+    const geometry::Embedding samples = geometry::embed(pieces.V, pieces.F, a.P);
+    // Each point of the limb's outline in the limb's mesh (the body's takes the overlap).
+    geometry::Embedding own = samples;
+    const Eigen::MatrixX3i limbF = pieces.F.bottomRows(pieces.F.rows() - pieces.limbFirstTriangle);
+    const geometry::Embedding inLimb =
+        geometry::embed(pieces.V, limbF, a.P.bottomRows(a.P.rows() / 2));
+    for (Eigen::Index i = 0; i < inLimb.I.size(); ++i) {
+        own.I(a.P.rows() / 2 + i) = inLimb.I(i) + int(pieces.limbFirstTriangle);
+        own.B.row(a.P.rows() / 2 + i) = inLimb.B.row(i);
+    }
+    const auto source = rigidFitPrecompute(pieces.V, pieces.F, own, a.N, {pieces.hinge});
+    QVERIFY(source);
+    QVERIFY(!rigidFitPrecompute(pieces.V, pieces.F, own, a.N, {{-1, 0}}));
+    const Eigen::MatrixX2d U1 = pieces.limbTurned(25.0);
+    const Eigen::MatrixX2d onB = geometry::applyEmbedding(own, U1, pieces.F);
+    StrokePoints b;
+    for (Eigen::Index i = 0; i < onB.rows(); ++i) {
+        const Eigen::Vector2d p = a.P.row(i).transpose();
+        const bool limbEnd = i >= a.P.rows() / 2 && (p.x() < 140.0 || p.x() > 250.0);
+        if (!limbEnd)
+            b.add(onB.row(i).transpose(), a.N.row(i).transpose());
+    }
+    const RigidFitResult fit = rigidFit(**source, *rigidFitTarget(b.P, b.N));
+    QCOMPARE(fit.status, FitStatus::Fitted);
+    const auto [body, limb] = pieces.hinge;
+    QVERIFY2((fit.U.row(body) - fit.U.row(limb)).norm() < 1.0,
+             qPrintable(QString::number((fit.U.row(body) - fit.U.row(limb)).norm())));
+    // The limb lies on B's sides, turned as B's: a vertex of its side half way along lies on
+    // B's side line (along it, the missing ends leave the limb a little short).
+    const Eigen::Index side = pieces.limbFirstVertex + 11; // limb grid vertex (11, 0): x = 200
+    const Eigen::Vector2d along = test::rotationBy(25.0) * Eigen::Vector2d(1.0, 0.0);
+    const Eigen::Vector2d off = (fit.U.row(side) - U1.row(side)).transpose();
+    const double across = std::abs(off.x() * along.y() - off.y() * along.x());
+    QVERIFY2(across < 1.5, qPrintable(QString::number(across)));
 }
 
 QTEST_APPLESS_MAIN(TestBetweenFit)

@@ -20,6 +20,9 @@ namespace finbook::deform::between {
 namespace {
 
 constexpr double kTurn = 2.0 * std::numbers::pi;
+// A link's weight against the cotangent Laplacian's (both dimensionless in 2D): it holds a
+// hinge's two vertices within a small share of a pixel of their blended offset.
+constexpr double kLinkWeight = 100.0;
 
 DeformError interpolationError(DeformErrorCode code, std::string message)
 {
@@ -173,7 +176,25 @@ std::vector<bool> holdOneVertexPerPart(const Eigen::MatrixX3i &F, ArapInterpolat
 {
     const Eigen::Index m = F.rows(), n = d.V0.rows();
     int parts = 0;
-    const Eigen::VectorXi labels = deform::detail::componentLabels(n, F, parts);
+    Eigen::VectorXi labels = deform::detail::componentLabels(n, F, parts);
+    const Eigen::VectorXi own = labels;
+    // Parts joined by links are one part: each label takes its smallest linked label.
+    std::vector<int> merged(static_cast<std::size_t>(parts));
+    std::iota(merged.begin(), merged.end(), 0);
+    const auto rootOf = [&merged](int a) {
+        while (merged[std::size_t(a)] != a)
+            a = merged[std::size_t(a)] = merged[std::size_t(merged[std::size_t(a)])];
+        return a;
+    };
+    for (const auto &[i, j] : d.links) {
+        if (labels(i) < 0 || labels(j) < 0)
+            continue;
+        const int a = rootOf(labels(i)), b = rootOf(labels(j));
+        merged[std::size_t(std::max(a, b))] = std::min(a, b);
+    }
+    for (Eigen::Index v = 0; v < n; ++v)
+        if (labels(v) >= 0)
+            labels(v) = rootOf(labels(v));
     std::vector<int> triangles(std::size_t(n), 0);
     for (Eigen::Index t = 0; t < m; ++t)
         for (int c = 0; c < 3; ++c)
@@ -194,11 +215,27 @@ std::vector<bool> holdOneVertexPerPart(const Eigen::MatrixX3i &F, ArapInterpolat
         }
         d.component(v) = part;
     }
+    // A part of pieces joined by links is placed by its largest piece (the body an arm turns
+    // on, which the arm's turn does not move): the centroid of all of them would take the
+    // chord of the arm's arc.
+    std::vector<int> size(std::size_t(parts), 0), largest(std::size_t(parts), -1);
+    for (Eigen::Index v = 0; v < n; ++v)
+        if (triangles[std::size_t(v)] > 0)
+            ++size[std::size_t(own(v))];
+    for (int piece = 0; piece < parts; ++piece) {
+        int &big = largest[std::size_t(rootOf(piece))];
+        if (size[std::size_t(piece)] > 0 &&
+            (big < 0 || size[std::size_t(piece)] > size[std::size_t(big)]))
+            big = piece;
+    }
+    d.placed.assign(std::size_t(n), false);
+    for (Eigen::Index v = 0; v < n; ++v)
+        d.placed[std::size_t(v)] = d.component(v) >= 0 && largest[std::size_t(labels(v))] == own(v);
     d.centroid0 = Eigen::MatrixX2d::Zero(solvedParts, 2);
     d.centroid1 = Eigen::MatrixX2d::Zero(solvedParts, 2);
     Eigen::VectorXd count = Eigen::VectorXd::Zero(solvedParts);
     for (Eigen::Index v = 0; v < n; ++v) {
-        if (d.component(v) < 0)
+        if (!d.placed[std::size_t(v)])
             continue;
         d.centroid0.row(d.component(v)) += d.V0.row(v);
         d.centroid1.row(d.component(v)) += d.V1.row(v);
@@ -216,7 +253,8 @@ std::vector<bool> holdOneVertexPerPart(const Eigen::MatrixX3i &F, ArapInterpolat
 
 ArapInterpolationResult arapInterpolationPrecompute(const Eigen::MatrixX2d &V0,
                                                     const Eigen::MatrixX2d &V1,
-                                                    const Eigen::MatrixX3i &F)
+                                                    const Eigen::MatrixX3i &F,
+                                                    const std::vector<std::array<int, 2>> &links)
 {
     if (auto error = deform::detail::validateArapInput(V0, F, Eigen::VectorXi()))
         return unexpected(*error);
@@ -229,14 +267,21 @@ ArapInterpolationResult arapInterpolationPrecompute(const Eigen::MatrixX2d &V0,
     if (V1.cwiseAbs().maxCoeff() > kMaxDeformCoordinate)
         return unexpected(interpolationError(DeformErrorCode::CoordinateOutOfRange,
                                              "the target pose is out of range"));
+    for (const auto &[i, j] : links)
+        if (i < 0 || j < 0 || i >= V0.rows() || j >= V0.rows())
+            return unexpected(
+                interpolationError(DeformErrorCode::InvalidIndex, "a link joins no vertex"));
     auto d = std::make_shared<ArapInterpolation>();
     d->V0 = V0;
     d->V1 = V1;
     d->F = F;
+    d->links = links;
     decomposeTriangles(V0, V1, F, *d);
     const std::vector<bool> held = holdOneVertexPerPart(F, *d);
     const Eigen::Index m = F.rows(), n = V0.rows();
-    auto system = std::make_shared<detail::MeshSystem>(int(n), F, held);
+    auto system = std::make_shared<detail::MeshSystem>(int(n), F, held, links);
+    for (std::size_t l = 0; l < links.size(); ++l)
+        system->addLink(int(l), kLinkWeight);
     for (Eigen::Index t = 0; t < m; ++t)
         for (int a = 0; a < 3; ++a)
             for (int b = a; b < 3; ++b)
@@ -277,6 +322,17 @@ Expected<Eigen::MatrixX2d, DeformError> arapInterpolate(const ArapInterpolation 
             rhs[std::size_t(u) * 2 + 1] += contribution.y();
         }
     }
+    for (const auto &[i, j] : data.links) {
+        const Eigen::RowVector2d offset =
+            (1.0 - t) * (data.V0.row(i) - data.V0.row(j)) + t * (data.V1.row(i) - data.V1.row(j));
+        for (const auto &[v, sign] : {std::pair(i, 1.0), std::pair(j, -1.0)}) {
+            const int u = system.unknown(v);
+            if (u < 0 || data.component(v) < 0)
+                continue;
+            rhs[std::size_t(u) * 2] += sign * kLinkWeight * offset.x();
+            rhs[std::size_t(u) * 2 + 1] += sign * kLinkWeight * offset.y();
+        }
+    }
     system.solveInPlace(rhs.data(), 2);
     Eigen::MatrixX2d U(n, 2);
     Eigen::MatrixX2d sum = Eigen::MatrixX2d::Zero(data.centroid0.rows(), 2);
@@ -289,6 +345,8 @@ Expected<Eigen::MatrixX2d, DeformError> arapInterpolate(const ArapInterpolation 
         }
         U.row(v) = u >= 0 ? Eigen::RowVector2d(rhs[std::size_t(u) * 2], rhs[std::size_t(u) * 2 + 1])
                           : Eigen::RowVector2d::Zero();
+        if (!data.placed[std::size_t(v)])
+            continue;
         sum.row(data.component(v)) += U.row(v);
         count(data.component(v)) += 1.0;
     }

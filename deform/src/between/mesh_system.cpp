@@ -17,7 +17,8 @@ int slotOf(const Eigen::SparseMatrix<double, Eigen::RowMajor> &m, int row, int c
 
 } // namespace
 
-MeshSystem::MeshSystem(int n, const Eigen::MatrixX3i &F, const std::vector<bool> &eliminated)
+MeshSystem::MeshSystem(int n, const Eigen::MatrixX3i &F, const std::vector<bool> &eliminated,
+                       const std::vector<std::array<int, 2>> &links)
 {
     m_unknown.assign(std::size_t(n), -1);
     for (int v = 0; v < n; ++v)
@@ -27,7 +28,7 @@ MeshSystem::MeshSystem(int n, const Eigen::MatrixX3i &F, const std::vector<bool>
     // Upper pattern in unknown numbering, then the order the supernodal factor wants (as the
     // ARAP precompute's).
     std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(std::size_t(m_free) + std::size_t(F.rows()) * 3);
+    entries.reserve(std::size_t(m_free) + std::size_t(F.rows()) * 3 + links.size());
     for (int u = 0; u < m_free; ++u)
         entries.emplace_back(u, u, 1.0);
     for (Eigen::Index t = 0; t < F.rows(); ++t) {
@@ -37,6 +38,11 @@ MeshSystem::MeshSystem(int n, const Eigen::MatrixX3i &F, const std::vector<bool>
             if (i >= 0 && j >= 0 && i != j)
                 entries.emplace_back(std::min(i, j), std::max(i, j), 1.0);
         }
+    }
+    for (const auto &[a, b] : links) {
+        const int i = m_unknown[std::size_t(a)], j = m_unknown[std::size_t(b)];
+        if (i >= 0 && j >= 0 && i != j)
+            entries.emplace_back(std::min(i, j), std::max(i, j), 1.0);
     }
     Eigen::SparseMatrix<double> upper(m_free, m_free);
     upper.setFromTriplets(entries.begin(), entries.end());
@@ -62,6 +68,16 @@ MeshSystem::MeshSystem(int n, const Eigen::MatrixX3i &F, const std::vector<bool>
     for (int u = 0; u < m_free; ++u) {
         const int p = m_position[std::size_t(u)];
         m_diagonal[std::size_t(u)] = slotOf(m_matrix, p, p);
+    }
+    m_linkSlots.reserve(links.size());
+    for (const auto &[a, b] : links) {
+        const int i = m_unknown[std::size_t(a)], j = m_unknown[std::size_t(b)];
+        const int pi = i >= 0 ? m_position[std::size_t(i)] : -1;
+        const int pj = j >= 0 ? m_position[std::size_t(j)] : -1;
+        const bool both = pi >= 0 && pj >= 0 && pi != pj;
+        m_linkSlots.push_back(
+            {pi >= 0 ? slotOf(m_matrix, pi, pi) : -1, pj >= 0 ? slotOf(m_matrix, pj, pj) : -1,
+             both ? slotOf(m_matrix, pi, pj) : -1, both ? slotOf(m_matrix, pj, pi) : -1});
     }
     m_slots.assign(std::size_t(F.rows()) * 9, -1);
     for (Eigen::Index t = 0; t < F.rows(); ++t) {
@@ -106,6 +122,17 @@ void MeshSystem::addDiagonal(int v, double w)
     const int u = m_unknown[std::size_t(v)];
     if (u >= 0)
         m_matrix.valuePtr()[m_diagonal[std::size_t(u)]] += w;
+}
+
+void MeshSystem::addLink(int l, double w)
+{
+    const std::array<int, 4> &slot = m_linkSlots[std::size_t(l)];
+    double *values = m_matrix.valuePtr();
+    if (slot[2] < 0 && slot[0] >= 0 && slot[0] == slot[1])
+        return; // both ends one unknown: the link holds nothing
+    for (int k = 0; k < 4; ++k)
+        if (slot[std::size_t(k)] >= 0)
+            values[slot[std::size_t(k)]] += k < 2 ? w : -w;
 }
 
 bool MeshSystem::factorize()

@@ -116,6 +116,9 @@ public:
             addPoint(m_pins.where.I(p), beta, pinWeight,
                      Complex(m_pins.targets(p, 0), m_pins.targets(p, 1)));
         }
+        const double hingeWeight = n * m_options.hingeWeight / std::max(1, pairs.abCount);
+        for (std::size_t h = 0; h < s.hinges.size(); ++h)
+            m_system.addLink(int(h), hingeWeight);
         for (int v = 0; v < s.vertexCount(); ++v) {
             m_system.addDiagonal(v, kProximalWeight);
             rhs(v) += kProximalWeight * state.u(v);

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <complex>
 #include <vector>
 
@@ -32,6 +33,8 @@ struct RigidFitSource {
     // has total weight n: D²·n / area (see RigidFitOptions::stiffness).
     double stiffnessUnit = 1.0;
     detail::MeshSystem system; // analysed, not factored: every fit copies it
+    // Hinges between pieces of a mesh cut apart (rigidFitPrecompute), as the system's links.
+    std::vector<std::array<int, 2>> hinges;
 
     int vertexCount() const { return int(V.rows()); }
     int sampleCount() const { return int(I.size()); }

@@ -17,7 +17,8 @@ using detail::Complex;
 
 RigidFitSourceResult rigidFitPrecompute(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                         const geometry::Embedding &samples,
-                                        const Eigen::MatrixX2d &N)
+                                        const Eigen::MatrixX2d &N,
+                                        const std::vector<std::array<int, 2>> &hinges)
 {
     if (auto error = deform::detail::validateArapInput(V, F, Eigen::VectorXi()))
         return unexpected(*error);
@@ -33,24 +34,29 @@ RigidFitSourceResult rigidFitPrecompute(const Eigen::MatrixX2d &V, const Eigen::
                                           "sample " + std::to_string(s) + " has no triangle",
                                           {int(s)}});
     }
+    for (const auto &[a, b] : hinges)
+        if (a < 0 || b < 0 || a >= V.rows() || b >= V.rows())
+            return unexpected(
+                DeformError{DeformErrorCode::InvalidIndex, "a hinge joins no vertex of A"});
     if (!samples.B.allFinite() || !N.allFinite())
         return unexpected(DeformError{DeformErrorCode::NonFiniteInput,
                                       "a sample's weights or normal are not finite"});
 
-    auto source =
-        std::make_shared<RigidFitSource>(RigidFitSource{V,
-                                                        F,
-                                                        samples.I,
-                                                        samples.B,
-                                                        Eigen::MatrixX2d(k, 2),
-                                                        Eigen::MatrixX2d(),
-                                                        {},
-                                                        {},
-                                                        0.0,
-                                                        0.0,
-                                                        0.0,
-                                                        1.0,
-                                                        detail::MeshSystem(int(V.rows()), F)});
+    auto source = std::make_shared<RigidFitSource>(
+        RigidFitSource{V,
+                       F,
+                       samples.I,
+                       samples.B,
+                       Eigen::MatrixX2d(k, 2),
+                       Eigen::MatrixX2d(),
+                       {},
+                       {},
+                       0.0,
+                       0.0,
+                       0.0,
+                       1.0,
+                       detail::MeshSystem(int(V.rows()), F, {}, hinges),
+                       hinges});
     for (Eigen::Index s = 0; s < k; ++s) {
         const double len = N.row(s).norm();
         source->N.row(s) =

@@ -16,6 +16,11 @@
 // each part moved so that its vertex centroid is (1 − t)·c0 + t·c1 (translation is not
 // determined by the triangles, and the centroid is the fairest place to fix it).
 // t = 0 gives V0 and t = 1 gives V1 (to round-off). Vertices in no triangle blend linearly.
+// Links (the hinges between pieces meshed apart, rigid_fit.h) join two vertices that no
+// triangle joins: the solve also minimises kLinkWeight·‖(u_i − u_j) − d(t)‖², d(t) the two
+// vertices' offset blended linearly from V0 to V1, and parts joined by links are one part,
+// placed by the centroid of its largest piece, so a limb meshed apart turns about its hinge on
+// a body that stays put, instead of sliding its centroid along a straight line.
 #pragma once
 
 #include <finbook/deform/deform_error.h>
@@ -23,7 +28,9 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <memory>
+#include <vector>
 
 namespace finbook::deform::between {
 
@@ -40,8 +47,12 @@ struct ArapInterpolation {
     Eigen::VectorXd area;      // m: rest (V0) area
     Eigen::MatrixXd gradient;  // m×6: ∇φ of corners 0, 1, 2 (x, y each) on V0
     Eigen::VectorXi component; // n: connected part of each vertex (−1: in no triangle)
-    Eigen::MatrixX2d centroid0, centroid1; // per part: vertex centroid in V0 and V1
+    // Per part: vertex centroid in V0 and V1 of its placed vertices: all of a part's, or of a
+    // part of pieces joined by links its largest piece's.
+    Eigen::MatrixX2d centroid0, centroid1;
+    std::vector<bool> placed; // n
     int flippedTriangles = 0; // triangles with det J ≤ 0 (turned over between V0 and V1)
+    std::vector<std::array<int, 2>> links;
     std::shared_ptr<const detail::MeshSystem> system; // factored Laplacian
 };
 
@@ -50,9 +61,11 @@ using ArapInterpolationResult = Expected<std::shared_ptr<const ArapInterpolation
 // V0, V1 n×2 (finite, same rows), F m×3 (non-zero area in V0, indices < n; V1 may be
 // anything finite). Errors: EmptyMesh, InvalidIndex, NonFiniteInput, CoordinateOutOfRange,
 // DegenerateTriangle, NonManifoldVertex, SizeMismatch, FactorizationFailed.
-ArapInterpolationResult arapInterpolationPrecompute(const Eigen::MatrixX2d &V0,
-                                                    const Eigen::MatrixX2d &V1,
-                                                    const Eigen::MatrixX3i &F);
+// Links: pairs of vertices below n (InvalidIndex otherwise).
+ArapInterpolationResult
+arapInterpolationPrecompute(const Eigen::MatrixX2d &V0, const Eigen::MatrixX2d &V1,
+                            const Eigen::MatrixX3i &F,
+                            const std::vector<std::array<int, 2>> &links = {});
 
 // U n×2 at time t (finite; [0, 1] interpolates, outside extrapolates). Errors: NonFiniteInput
 // (t), SolveFailed. Allocates O(n).

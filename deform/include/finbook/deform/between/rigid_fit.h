@@ -28,6 +28,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,6 +53,9 @@ struct RigidFitOptions {
     std::vector<double> stiffness = {3e-2, 1e-2, 3e-3, 1e-3, 3e-4};
     int stageIterations = 30;
     double pinWeight = 50.0; // a pin weighs this many pairs' worth
+    // A hinge between two pieces of A's mesh (rigidFitPrecompute) holds its two vertices
+    // together with this many pairs' worth.
+    double hingeWeight = 50.0;
     // Converged: no vertex moved more than tolerance × B's bounding-box diagonal in one
     // iteration of the last stage.
     double tolerance = 2e-4;
@@ -98,9 +102,14 @@ using RigidFitSourceResult = Expected<std::shared_ptr<const RigidFitSource>, Def
 // normals (a stroke's normal there; either sign). Errors: EmptyMesh (no triangles or no
 // samples), InvalidIndex, NonFiniteInput, CoordinateOutOfRange, DegenerateTriangle,
 // SizeMismatch (N or B rows ≠ I size).
+// `hinges`: pairs of vertices the fit holds together (RigidFitOptions::hingeWeight) though no
+// triangle joins them: a mesh of pieces meshed apart (an arm drawn over the body, meshed on its
+// own: model/inbetween/between_drawings.h), each piece turning about its hinge as a cut-out
+// puppet's limbs do, instead of bending the flesh the union of the two would make.
 RigidFitSourceResult rigidFitPrecompute(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                         const geometry::Embedding &samples,
-                                        const Eigen::MatrixX2d &N);
+                                        const Eigen::MatrixX2d &N,
+                                        const std::vector<std::array<int, 2>> &hinges = {});
 
 // P k×2 B's points, N k×2 their unit normals (either sign). Non-finite rows are dropped;
 // an empty target is allowed (every fit against it fails with EmptyTarget).
