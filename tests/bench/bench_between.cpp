@@ -33,6 +33,7 @@
 #include <finbook/deform/between/arap_interpolation.h>
 #include <finbook/geometry/embedding.h>
 #include <finbook/geometry/triangle_locator.h>
+#include <finbook/model/finbook_file.h>
 #include <finbook/model/inbetween/between_drawings.h>
 
 #include <QDir>
@@ -390,6 +391,78 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     sheet.save(QDir(pngDir).filePath(QStringLiteral("between_%1.png").arg(name)));
 }
 
+// Two keys drawn in the app (a .finbook file: its first and last frames, each object the two
+// draw differently): no true pose to measure against, so the row gives the fit's own figures,
+// and the sheet (--png) what the animator would see: A, B, the fit over B, and the in-betweens
+// at 0.25, 0.5 and 0.85.
+void runKeys(const QString &file, const BetweenOptions &options, const QString &pngDir)
+{
+    const QString name = QFileInfo(file).completeBaseName();
+    QJsonObject row{{QStringLiteral("bench"), QStringLiteral("between")},
+                    {QStringLiteral("file"), QFileInfo(file).fileName()}};
+    const auto print = [&row] {
+        std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
+        std::fflush(stdout);
+    };
+    const auto loaded = loadFinbook(file);
+    if (!loaded || loaded->frames.size() < 2) {
+        row.insert(QStringLiteral("error"),
+                   loaded ? QStringLiteral("fewer than two frames") : loaded.error().message);
+        return print();
+    }
+    const Frame &first = loaded->frames.front(), &last = loaded->frames.back();
+    const double closeGap = loaded->settings.closeGap;
+    const KeyFits fits = fitKeyDrawings(first, last, closeGap, options);
+    for (const auto &[object, why] : fits.failures)
+        row.insert(QStringLiteral("refused_%1").arg(object), why);
+    Frame fitted, mid[3];
+    const double times[3] = {0.25, 0.5, 0.85};
+    QRectF box;
+    for (std::size_t i = 0; i < fits.fits.size(); ++i) {
+        const std::shared_ptr<const DrawingFit> &fit = fits.fits[i];
+        if (!fit)
+            continue;
+        row.insert(QStringLiteral("fit_ms_%1").arg(i), 1000.0 * fit->seconds);
+        row.insert(QStringLiteral("error_median_pct_%1").arg(i), 100.0 * fit->fit.relativeMedian);
+        row.insert(QStringLiteral("uncovered_pct_%1").arg(i), 100.0 * fit->fit.uncoveredShare);
+        row.insert(QStringLiteral("distortion_%1").arg(i), fit->fit.distortion);
+        row.insert(QStringLiteral("hinges_%1").arg(i), int(fit->hinges.size()));
+        row.insert(QStringLiteral("vertices_%1").arg(i), int(fit->meshed->mesh.V.rows()));
+        BetweenOptions noFade = options;
+        noFade.crossFade = 0.0;
+        fitted.groups.push_back(betweenDrawing(*fit, 1.0, noFade));
+        for (int k = 0; k < 3; ++k) {
+            mid[k].groups.push_back(betweenDrawing(*fit, times[k], options));
+            if (auto in = fadingInDrawing(*fit, times[k], options))
+                mid[k].groups.push_back(std::move(*in));
+        }
+    }
+    print();
+    if (pngDir.isEmpty())
+        return;
+    for (const Frame *f : {&first, &last})
+        for (const StrokeGroup &g : f->groups)
+            box = box.united(testing::shownBounds(g));
+    const QTransform t = testing::pictureView(box.adjusted(-8, -8, 8, 8), kCell);
+    Frame under;
+    for (const StrokeGroup &g : last.groups)
+        under.groups.push_back(g);
+    std::vector<QImage> cells{cell(first, t, loaded->settings), cell(last, t, loaded->settings)};
+    cells.push_back(
+        cell(fitted, t, loaded->settings, under.groups.empty() ? nullptr : &under.groups[0]));
+    for (const Frame &f : mid)
+        cells.push_back(cell(f, t, loaded->settings));
+    QImage sheet(kCell * int(cells.size()), kCell, QImage::Format_RGB32);
+    QPainter painter(&sheet);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        painter.drawImage(int(i) * kCell, 0, cells[i]);
+        painter.setPen(QColor(200, 200, 200));
+        painter.drawLine(int(i) * kCell, 0, int(i) * kCell, kCell);
+    }
+    painter.end();
+    sheet.save(QDir(pngDir).filePath(QStringLiteral("between_%1.png").arg(name)));
+}
+
 int benchBetween(const QStringList &args)
 {
     QString pngDir;
@@ -404,6 +477,10 @@ int benchBetween(const QStringList &args)
                 options.fit.stiffness.push_back(v.toDouble());
         } else if (args[i] == QLatin1String("--no-articulated")) {
             options.articulated = false;
+        } else if (args[i] == QLatin1String("--whole-mesh")) {
+            options.layeredParts = false;
+        } else if (args[i] == QLatin1String("--hinge-weight") && i + 1 < args.size()) {
+            options.fit.hingeWeight = args[++i].toDouble();
         } else if (args[i] == QLatin1String("--fail-distortion") && i + 1 < args.size()) {
             options.fit.failDistortion = args[++i].toDouble();
         } else {
@@ -418,6 +495,10 @@ int benchBetween(const QStringList &args)
         QDir().mkpath(pngDir);
     Summary summary;
     for (const QString &file : files) {
+        if (file.endsWith(QLatin1String(".finbook"))) {
+            runKeys(file, options, pngDir);
+            continue;
+        }
         QString error;
         const auto lines = testing::readDrawing(file, &error);
         if (lines.empty()) {

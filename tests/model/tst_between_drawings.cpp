@@ -8,6 +8,8 @@
 #include <finbook/model/commands.h>
 #include <finbook/model/document.h>
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_regions.h>
+#include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/inbetween/between_drawings.h>
 #include <finbook/model/inbetween/inbetween_commands.h>
@@ -196,6 +198,8 @@ private slots:
     void anArmTheFitCannotSwingIsRefusedWhereBShowsIt_data();
     void anArmTheFitCannotSwingIsRefusedWhereBShowsIt();
     void anArmSwungOutInTheAppIsFound();
+    void anArmDrawnOverTheBodyTurnsAsAPiece_data();
+    void anArmDrawnOverTheBodyTurnsAsAPiece();
     void inbetweensStartOnAAndLandOnB();
     void generatedInbetweensAreOneUndoStep();
 };
@@ -365,10 +369,11 @@ void TestBetweenDrawings::anArmTheFitCannotSwingIsRefusedWhereBShowsIt_data()
 void TestBetweenDrawings::anArmTheFitCannotSwingIsRefusedWhereBShowsIt()
 {
     // Found in the app: a character drawn with both arms down, their tops over the body, and
-    // drawn again with the right arm raised, or (drawn in the app) out to the side. A's mesh is the
-    // union of what was drawn, so the arm is joined to the body along its top and no fit as rigid
-    // as possible swings it free: the fit lays A's arm along the body, and its in-betweens crumpled
-    // the arm. Such a fit is refused, and the message names where B's arm is.
+    // drawn again with the right arm raised, or (drawn in the app) out to the side. With A meshed
+    // as one (BetweenOptions::layeredParts off), the mesh is the union of what was drawn, so the
+    // arm is joined to the body along its top and no fit as rigid as possible swings it free: the
+    // fit lays A's arm along the body, and its in-betweens crumpled the arm. Such a fit is refused,
+    // and the message names where B's arm is.
     QFETCH(QPointF, hand);
     StrokeGroup a, b;
     double closeGap = -1.0;
@@ -384,7 +389,9 @@ void TestBetweenDrawings::anArmTheFitCannotSwingIsRefusedWhereBShowsIt()
         a = character({830, 560}, 3.0, 0.0, 1);
         b = character(hand, 4.1, 2.0, 100);
     }
-    const auto made = fitDrawings(a, b, closeGap);
+    BetweenOptions whole; // A meshed as one (anArmDrawnOverTheBodyTurnsAsAPiece: as parts)
+    whole.layeredParts = false;
+    const auto made = fitDrawings(a, b, closeGap, {}, whole);
     QVERIFY(!made);
     qInfo("%s", qPrintable(made.error()));
     const QRegularExpressionMatch at =
@@ -433,6 +440,116 @@ void TestBetweenDrawings::anArmSwungOutInTheAppIsFound()
     qInfo("hand fitted %.1f px from B's (it swung %.1f px)", off, swing);
     QVERIFY2(off < 0.2 * swing, qPrintable(QString::number(off)));
     QVERIFY((*made)->fit.uncoveredShare < 0.05);
+}
+
+void TestBetweenDrawings::anArmDrawnOverTheBodyTurnsAsAPiece_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::newRow("raised (120°)") << QString();
+    QTest::newRow("out to the side, drawn in the app") << QStringLiteral("between_arm_out.finbook");
+    QTest::newRow("swung out, drawn in the app") << QStringLiteral("between_arm_swing.finbook");
+}
+
+void TestBetweenDrawings::anArmDrawnOverTheBodyTurnsAsAPiece()
+{
+    // The same keys, A meshed as parts (the default): each arm, a closed line drawn over the
+    // body, is meshed on its own and hinged where it overlaps the body. The in-betweens turn the
+    // arm about the shoulder as a piece (its length kept, half the turn half way), and their
+    // fills are what the parts show: the body's own colour where the arm's top covered it, and
+    // nothing in the space the arm swung out of.
+    QFETCH(QString, file);
+    StrokeGroup a, b;
+    double closeGap = -1.0;
+    if (file.isEmpty()) {
+        a = character({830, 560}, 3.0, 0.0, 1);
+        b = character({880, 270}, 4.1, 2.0, 100);
+    } else {
+        const auto loaded = loadFinbook(QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/") + file);
+        QVERIFY(loaded && loaded->frames.size() == 2);
+        a = loaded->frames[0].groups.at(0);
+        b = loaded->frames[1].groups.at(0);
+        closeGap = loaded->settings.closeGap;
+        QVERIFY(!a.fills.empty());
+    }
+    const auto made = fitDrawings(a, b, closeGap);
+    QVERIFY2(made, made ? "" : qPrintable(made.error()));
+    const DrawingFit &fit = **made;
+    QCOMPARE(fit.hinges.size(), std::size_t(2)); // both arms, the head only touches the body
+    QCOMPARE(fit.parts.size(), std::size_t(2));
+    BetweenOptions noFade;
+    noFade.crossFade = 0.0;
+    const StrokeGroup mid = betweenDrawing(fit, 0.5, noFade);
+    const auto line = [](const StrokeGroup &g, std::size_t s) {
+        QPolygonF out;
+        for (const StrokePoint &p : g.strokes[s].data->points)
+            out << pointOf(p);
+        return out;
+    };
+    // The arm (stroke 3) as a piece: its farthest two points as far apart, and its direction
+    // from the body's centre to its far end turned half of A's to B's.
+    const QPointF centre = line(a, 0).boundingRect().center();
+    const auto farthest = [&](const QPolygonF &arm) {
+        QPointF far = arm.front();
+        for (const QPointF &p : arm)
+            if (QLineF(centre, p).length() > QLineF(centre, far).length())
+                far = p;
+        return far;
+    };
+    const auto span = [](const QPolygonF &arm) {
+        double most = 0.0;
+        for (const QPointF &p : arm)
+            for (const QPointF &q : arm)
+                most = std::max(most, QLineF(p, q).length());
+        return most;
+    };
+    const QPolygonF armA = line(a, 3), armMid = line(mid, 3), armB = line(b, 3);
+    QVERIFY2(std::abs(span(armMid) / span(armA) - 1.0) < 0.03,
+             qPrintable(QString::number(span(armMid) / span(armA))));
+    const auto angleOf = [&](const QPolygonF &arm) {
+        return QLineF(centre, farthest(arm)).angle();
+    };
+    const double whole = std::remainder(angleOf(armB) - angleOf(armA), 360.0);
+    const double half = std::remainder(angleOf(armMid) - angleOf(armA), 360.0);
+    qInfo("arm turned %.1f° of %.1f° half way", half, whole);
+    QVERIFY2(std::abs(half - 0.5 * whole) < 0.15 * std::abs(whole) + 2.0,
+             qPrintable(QStringLiteral("%1 of %2").arg(half).arg(whole)));
+    if (a.fills.empty())
+        return;
+    // Fills: every fill of the in-between lies on a part as carried (body, head or an arm), and
+    // where A's arm top lay over the body, now uncovered, the body's colour shows.
+    const ObjectRegionsPtr regions = objectRegions(mid, closeGap);
+    const std::vector<int> shows = faceFills(*regions, mid.fills);
+    const auto colourAt = [&](QPointF p) -> std::optional<QRgb> {
+        const int face = regions->faceAt(p);
+        if (face < 0 || shows[std::size_t(face)] < 0)
+            return std::nullopt;
+        return mid.fills[std::size_t(shows[std::size_t(face)])].color;
+    };
+    for (const Fill &f : mid.fills)
+        QVERIFY2(
+            std::any_of(mid.strokes.begin(), mid.strokes.end(),
+                        [&](const Stroke &s) {
+                            QPolygonF ring;
+                            for (const StrokePoint &p : s.data->points)
+                                ring << pointOf(p);
+                            return ring.size() > 8 && ring.containsPoint(f.seed, Qt::OddEvenFill);
+                        }),
+            qPrintable(
+                QStringLiteral("a fill at (%1, %2) on no part").arg(f.seed.x()).arg(f.seed.y())));
+    const std::optional<QRgb> body = colourAt(centre);
+    QVERIFY(body);
+    QPointF top; // the middle of A's arm's points inside the body
+    int inside = 0;
+    const QPolygonF bodyLine = line(a, 0);
+    for (const QPointF &p : armA)
+        if (bodyLine.containsPoint(p, Qt::OddEvenFill)) {
+            top += p;
+            ++inside;
+        }
+    QVERIFY(inside > 0);
+    top /= inside;
+    QVERIFY(!armMid.containsPoint(top, Qt::OddEvenFill)); // the arm has left it
+    QCOMPARE(colourAt(top), body);
 }
 
 void TestBetweenDrawings::inbetweensStartOnAAndLandOnB()

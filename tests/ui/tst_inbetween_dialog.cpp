@@ -278,35 +278,54 @@ void TestInbetweenDialog::differentDrawingsAreCarriedOntoEachOther()
     QCOMPARE(model::serializeFinbook(*doc), before);
 }
 
-// A drawing the fit refuses (tests/data/between_arm_out.finbook: the arm drawn over the body
-// and swung out in the second key) is one line in the objects list, with why and where, and the
-// in-betweens switch it over half way.
+// tests/data/between_arm_out.finbook (the arm drawn over the body and swung out in the second
+// key) is carried, the arm as a piece of its own; the same first key with a scribble for the
+// second is refused: one line in the objects list, with why, and the in-betweens switch it over
+// half way.
 void TestInbetweenDialog::aRefusedFitIsListedOnceWithItsReason()
 {
     model::Document *doc = m_window->document();
     const auto loaded = model::loadFinbook(
         QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/between_arm_out.finbook"));
     QVERIFY(loaded && loaded->frames.size() == 2);
-    doc->reset(loaded->frames, loaded->settings, loaded->nextId);
-    QCoreApplication::processEvents();
-    pickKeys();
-    QStringList lines;
-    bool fitted = true, settled = false;
-    const bool driven = runDialog([&](ui::InbetweenDialog *dialog) {
-        // Read, then closed, so that a failing check below does not leave the dialog open.
-        settled = QTest::qWaitFor([dialog] { return !dialog->fitting(); }, 20000);
-        auto *objects = dialog->findChild<QListWidget *>(QStringLiteral("inbetweenObjects"));
-        for (int row = 0; objects && row < objects->count(); ++row)
-            lines << objects->item(row)->text();
-        fitted = !dialog->fits().empty();
-        dialog->reject();
-    });
-    QVERIFY(driven && settled);
-    QCOMPARE(lines.size(), 1);
-    QVERIFY2(lines[0].contains(QStringLiteral("could not be carried")) &&
-                 lines[0].contains(QStringLiteral("nothing of the first key")),
-             qPrintable(lines[0]));
-    QVERIFY(!fitted);
+    std::vector<model::Frame> scribbled = loaded->frames;
+    std::vector<model::StrokePoint> zigzag;
+    for (int i = 0; i < 24; ++i)
+        zigzag.push_back({float(560 + 16 * i), float(i % 2 ? 250 : 560), 1.0f});
+    model::StrokeGroup &second = scribbled[1].groups.at(0);
+    second.fills.clear();
+    second.strokes.resize(1);
+    auto data = std::make_shared<model::StrokeData>(*second.strokes[0].data);
+    data->points = zigzag;
+    second.strokes[0].data = std::move(data);
+    for (const bool refused : {false, true}) {
+        doc->reset(refused ? scribbled : loaded->frames, loaded->settings, loaded->nextId);
+        QCoreApplication::processEvents();
+        pickKeys();
+        QStringList lines;
+        bool fitted = true, settled = false;
+        const bool driven = runDialog([&](ui::InbetweenDialog *dialog) {
+            // Read, then closed, so that a failing check below does not leave the dialog open.
+            settled = QTest::qWaitFor([dialog] { return !dialog->fitting(); }, 20000);
+            auto *objects = dialog->findChild<QListWidget *>(QStringLiteral("inbetweenObjects"));
+            for (int row = 0; objects && row < objects->count(); ++row)
+                lines << objects->item(row)->text();
+            fitted = !dialog->fits().empty();
+            dialog->reject();
+        });
+        QVERIFY(driven && settled);
+        QCOMPARE(lines.size(), 1);
+        if (!refused) {
+            QVERIFY2(lines[0].contains(QStringLiteral("carried from the first key")),
+                     qPrintable(lines[0]));
+            QVERIFY(fitted);
+            continue;
+        }
+        QVERIFY2(lines[0].contains(QStringLiteral("could not be carried")) &&
+                     lines[0].contains(QStringLiteral("too different")),
+                 qPrintable(lines[0]));
+        QVERIFY(!fitted);
+    }
 }
 
 // Issue 22, item 6: the dialog does not cover the page it previews on, the canvas shows the

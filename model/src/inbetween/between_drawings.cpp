@@ -1,9 +1,14 @@
 #include <finbook/deform/between/arap_interpolation.h>
+#include <finbook/geometry/triangle_locator.h>
+#include <finbook/model/fill/fill_regions.h>
+#include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/inbetween/between_drawings.h>
 #include <finbook/model/rig/rig_commands.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 
 #include <QCoreApplication>
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <chrono>
@@ -54,6 +59,24 @@ constexpr std::size_t kMaxTargetPoints = 6000;
 // denser than A's samples, so that every sample finds one of B's within the spacing.
 constexpr double kSampleSpacing = 2.0;
 constexpr double kTargetSpacing = 1.5;
+// A closed line of A (its ends within kClosedEnds px, or kClosedShare of its length) that
+// overlaps a larger one — between kOverlapLow and kOverlapHigh of its points inside the larger
+// one's outline, and some of the larger one's inside its own — is a part drawn over another
+// (an arm's top over the body): it is meshed on its own and hinged to the other.
+constexpr double kClosedEnds = 6.0;
+constexpr double kClosedShare = 0.05;
+constexpr double kOverlapLow = 0.02;
+constexpr double kOverlapHigh = 0.6;
+// A part longer than this many times its width is a limb: it turns about its end's middle.
+constexpr double kLimbLength = 2.0;
+// At most this many closed lines (the largest) are looked at as parts, each judged on at most
+// kShareSamples of its points: a drawing of hundreds of closed scribbles costs no more.
+constexpr std::size_t kMaxParts = 64;
+constexpr std::size_t kShareSamples = 256;
+// A line within kTouch px (and half the part's pen) of a part's outline touches it; one with
+// kInsidePart of its points inside the outline, and none that near, lies in it.
+constexpr double kTouch = 3.0;
+constexpr double kInsidePart = 0.9;
 
 // Affine coordinates of p in triangle (a, b, c), unclamped; nullopt for a triangle of no area.
 std::optional<Eigen::RowVector3d> affineCoords(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
@@ -134,7 +157,7 @@ QString finish(DrawingFit &fitted)
     const Eigen::MatrixX2d &V = fit->meshed->mesh.V;
     const Eigen::MatrixX3i &F = fit->meshed->mesh.F;
     const StrokeGroup &B = fit->b;
-    const auto motion = between::arapInterpolationPrecompute(V, r.U, F);
+    const auto motion = between::arapInterpolationPrecompute(V, r.U, F, fit->hinges);
     if (!motion)
         return BetweenDrawings::tr("The fitted motion cannot be interpolated: %1")
             .arg(QString::fromStdString(motion.error().message));
@@ -177,6 +200,402 @@ completed(std::shared_ptr<DrawingFit> fit, std::chrono::steady_clock::time_point
     fit->seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return std::shared_ptr<const DrawingFit>(std::move(fit));
+}
+
+// A's parts drawn one over another: each such closed line meshed on its own, and the rest of
+// A's lines meshed together as before; hinged where each part overlaps the one under it.
+struct LayeredMesh {
+    std::shared_ptr<const MeshedObject> meshed;
+    std::vector<std::array<int, 2>> hinges;
+    std::vector<LayeredPart> parts;
+    Eigen::Index restTriangles = 0;
+};
+
+bool insidePolygon(const Eigen::Vector2d &p, const std::vector<StrokePoint> &polygon)
+{
+    bool in = false;
+    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+        const double xi = polygon[i].x, yi = polygon[i].y, xj = polygon[j].x, yj = polygon[j].y;
+        if ((yi > p.y()) != (yj > p.y()) && p.x() < (xj - xi) * (p.y() - yi) / (yj - yi) + xi)
+            in = !in;
+    }
+    return in;
+}
+
+double polygonArea(const std::vector<StrokePoint> &polygon)
+{
+    double twice = 0.0;
+    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+        twice += double(polygon[j].x) * polygon[i].y - double(polygon[i].x) * polygon[j].y;
+    return 0.5 * std::abs(twice);
+}
+
+double meshArea(const geometry::ObjectMesh &mesh)
+{
+    double area = 0.0;
+    for (Eigen::Index t = 0; t < mesh.F.rows(); ++t) {
+        const Eigen::Vector2d u = (mesh.V.row(mesh.F(t, 1)) - mesh.V.row(mesh.F(t, 0))).transpose();
+        const Eigen::Vector2d v = (mesh.V.row(mesh.F(t, 2)) - mesh.V.row(mesh.F(t, 0))).transpose();
+        area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
+    }
+    return area;
+}
+
+bool closedLine(const Stroke &s)
+{
+    if (!inked(s) || s.data->points.size() < 8)
+        return false;
+    const std::vector<StrokePoint> &p = s.data->points;
+    double length = 0.0;
+    for (std::size_t k = 1; k < p.size(); ++k)
+        length += std::hypot(p[k].x - p[k - 1].x, p[k].y - p[k - 1].y);
+    const double ends = std::hypot(p.back().x - p.front().x, p.back().y - p.front().y);
+    return ends <= std::max(kClosedEnds, kClosedShare * length);
+}
+
+QRectF boundsOf(const std::vector<StrokePoint> &points)
+{
+    float left = points.front().x, right = left, top = points.front().y, bottom = top;
+    for (const StrokePoint &p : points) {
+        left = std::min(left, p.x);
+        right = std::max(right, p.x);
+        top = std::min(top, p.y);
+        bottom = std::max(bottom, p.y);
+    }
+    return QRectF(QPointF(left, top), QPointF(right, bottom));
+}
+
+// The share of `a`'s points inside `b`'s outline (judged on at most kShareSamples of them,
+// evenly along a).
+double shareInside(const std::vector<StrokePoint> &a, const std::vector<StrokePoint> &b)
+{
+    if (a.empty() || b.empty() || !boundsOf(a).intersects(boundsOf(b)))
+        return 0.0;
+    const std::size_t stride = std::max<std::size_t>(1, a.size() / kShareSamples);
+    std::size_t in = 0, judged = 0;
+    for (std::size_t k = 0; k < a.size(); k += stride, ++judged)
+        in += insidePolygon(Eigen::Vector2d(a[k].x, a[k].y), b);
+    return double(in) / double(judged);
+}
+
+// The smallest distance from `line`'s points (at most kShareSamples of them) to the outline
+// `ring` (its segments, closed).
+double distanceTo(const std::vector<StrokePoint> &line, const std::vector<StrokePoint> &ring)
+{
+    const std::size_t stride = std::max<std::size_t>(1, line.size() / kShareSamples);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < line.size(); k += stride) {
+        const Eigen::Vector2d x(line[k].x, line[k].y);
+        for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+            const Eigen::Vector2d p(ring[j].x, ring[j].y), q(ring[i].x, ring[i].y);
+            const Eigen::Vector2d d = q - p;
+            const double length = d.squaredNorm();
+            const double t = length > 0.0 ? std::clamp((x - p).dot(d) / length, 0.0, 1.0) : 0.0;
+            nearest = std::min(nearest, (x - (p + t * d)).norm());
+        }
+    }
+    return nearest;
+}
+
+// Where a part drawn over another turns on it: for a limb (a part longer than kLimbLength
+// times its width) the middle of its round end that lies over the other, half its width in
+// from that end along its axis (an arm's top over the body: the shoulder); for a rounder part,
+// the middle of where the two overlap (its points inside the other's outline and the other's
+// inside its own). Nullopt when they do not overlap.
+std::optional<Eigen::Vector2d> pivotOf(const std::vector<StrokePoint> &part,
+                                       const std::vector<StrokePoint> &under)
+{
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero(), centroid = Eigen::Vector2d::Zero();
+    int count = 0;
+    for (const StrokePoint &x : part) {
+        centroid += Eigen::Vector2d(x.x, x.y);
+        if (insidePolygon(Eigen::Vector2d(x.x, x.y), under)) {
+            sum += Eigen::Vector2d(x.x, x.y);
+            ++count;
+        }
+    }
+    for (const StrokePoint &x : under)
+        if (insidePolygon(Eigen::Vector2d(x.x, x.y), part)) {
+            sum += Eigen::Vector2d(x.x, x.y);
+            ++count;
+        }
+    if (count == 0 || part.empty())
+        return std::nullopt;
+    const Eigen::Vector2d overlap = sum / count;
+    centroid /= double(part.size());
+    Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
+    for (const StrokePoint &x : part) {
+        const Eigen::Vector2d d = Eigen::Vector2d(x.x, x.y) - centroid;
+        covariance += d * d.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> axes(covariance);
+    const Eigen::Vector2d axis = axes.eigenvectors().col(1);
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const StrokePoint &x : part) {
+        const double along = (Eigen::Vector2d(x.x, x.y) - centroid).dot(axis);
+        low = std::min(low, along);
+        high = std::max(high, along);
+    }
+    const double length = high - low;
+    const double width = length > 0.0 ? polygonArea(part) / length : 0.0;
+    if (!(length > kLimbLength * width))
+        return overlap;
+    // The end nearer the overlap lies over the other part.
+    const double at = (overlap - centroid).dot(axis);
+    const double end =
+        std::abs(at - low) < std::abs(at - high) ? low + 0.5 * width : high - 0.5 * width;
+    return Eigen::Vector2d(centroid + end * axis);
+}
+
+std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
+{
+    // Closed lines, largest first; each that overlaps a larger one lies over it.
+    std::vector<std::size_t> closed;
+    for (std::size_t s = 0; s < a.strokes.size(); ++s)
+        if (closedLine(a.strokes[s]) && polygonArea(a.strokes[s].data->points) > 100.0)
+            closed.push_back(s);
+    std::stable_sort(closed.begin(), closed.end(), [&](std::size_t x, std::size_t y) {
+        return polygonArea(a.strokes[x].data->points) > polygonArea(a.strokes[y].data->points);
+    });
+    closed.resize(std::min(closed.size(), kMaxParts));
+    std::map<std::size_t, std::size_t> over; // part → the larger line it lies over
+    for (std::size_t i = 1; i < closed.size(); ++i) {
+        const auto &part = a.strokes[closed[i]].data->points;
+        double most = 0.0;
+        for (std::size_t j = 0; j < i; ++j) {
+            const auto &under = a.strokes[closed[j]].data->points;
+            const double share = shareInside(part, under);
+            if (share >= kOverlapLow && share <= kOverlapHigh && share > most &&
+                shareInside(under, part) > 0.0) {
+                most = share;
+                over[closed[i]] = closed[j];
+            }
+        }
+    }
+    // The other lines: one inside a part (a stripe on a sleeve) goes with it (with the smallest
+    // part holding it); a part that another line touches or crosses (hair on a head, a hand
+    // drawn at an arm's end, a line across the shoulder) is not a part on its own, since which
+    // of the two that line goes with is not known.
+    std::map<std::size_t, std::size_t> inPart; // line → the part it lies in
+    for (auto it = over.begin(); it != over.end();) {
+        const auto &[part, under] = *it;
+        const std::vector<StrokePoint> &outline = a.strokes[part].data->points;
+        const double reach = kTouch + 0.5 * double(a.strokes[part].data->width);
+        bool touched = false;
+        std::vector<std::size_t> held;
+        for (std::size_t s = 0; s < a.strokes.size() && !touched; ++s) {
+            if (s == part || s == under || over.count(s) || !inked(a.strokes[s]))
+                continue;
+            const std::vector<StrokePoint> &line = a.strokes[s].data->points;
+            if (!boundsOf(line)
+                     .adjusted(-reach, -reach, reach, reach)
+                     .intersects(boundsOf(outline)))
+                continue;
+            if (shareInside(line, outline) >= kInsidePart && distanceTo(line, outline) > reach)
+                held.push_back(s);
+            else
+                touched = distanceTo(line, outline) <= reach || shareInside(line, outline) > 0.0;
+        }
+        if (touched) {
+            it = over.erase(it);
+            continue;
+        }
+        for (const std::size_t s : held) {
+            const auto same = inPart.find(s);
+            if (same == inPart.end() ||
+                polygonArea(outline) < polygonArea(a.strokes[same->second].data->points))
+                inPart[s] = part;
+        }
+        ++it;
+    }
+    if (over.empty())
+        return std::nullopt;
+    // Meshes: the rest (every line not in a part over another), then each part with the lines
+    // inside it. Each stroke's points go to its mesh's embedding.
+    std::vector<std::vector<std::size_t>> meshStrokes(1);
+    std::map<std::size_t, std::size_t> meshOf; // stroke → mesh
+    for (const auto &[part, under] : over) {
+        meshOf[part] = meshStrokes.size();
+        meshStrokes.push_back({part});
+    }
+    for (std::size_t s = 0; s < a.strokes.size(); ++s) {
+        if (over.count(s))
+            continue;
+        const auto held = inPart.find(s);
+        const std::size_t k =
+            held != inPart.end() && over.count(held->second) ? meshOf[held->second] : 0;
+        meshOf[s] = k;
+        meshStrokes[k].push_back(s);
+    }
+    // The rest first; each part then as finely as the rest (the vertices a mesh aims for are
+    // the same whatever its size, so a part's density goes with the root of its share of the
+    // rest's area), so the stack has about the vertices the whole would have.
+    std::vector<std::shared_ptr<const MeshedObject>> meshes;
+    double restArea = 0.0;
+    for (const std::vector<std::size_t> &strokes : meshStrokes) {
+        MeshKey key = MeshKey::of(a, closeGap);
+        key.strokes.clear();
+        for (const std::size_t s : strokes)
+            key.strokes.push_back(a.strokes[s].data);
+        if (std::none_of(strokes.begin(), strokes.end(),
+                         [&](std::size_t s) { return inked(a.strokes[s]); }))
+            return std::nullopt;
+        if (!meshes.empty() && restArea > 0.0)
+            key.density = std::clamp(
+                key.density * std::sqrt(polygonArea(a.strokes[strokes[0]].data->points) / restArea),
+                0.05, key.density);
+        auto meshed = meshObject(key);
+        if (!meshed)
+            return std::nullopt;
+        if (meshes.empty())
+            restArea = meshArea((*meshed)->mesh);
+        meshes.push_back(*meshed);
+    }
+    // Stacked: vertices and triangles mesh after mesh; every A point (stroke after stroke)
+    // embedded in its stroke's mesh.
+    auto out = std::make_shared<MeshedObject>();
+    std::vector<Eigen::Index> vertexOffset, triangleOffset;
+    Eigen::Index n = 0, m = 0;
+    for (const auto &mesh : meshes) {
+        vertexOffset.push_back(n);
+        triangleOffset.push_back(m);
+        n += mesh->mesh.V.rows();
+        m += mesh->mesh.F.rows();
+    }
+    out->mesh.region = meshes[0]->mesh.region;
+    out->mesh.V.resize(n, 2);
+    out->mesh.F.resize(m, 3);
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        out->mesh.V.middleRows(vertexOffset[k], meshes[k]->mesh.V.rows()) = meshes[k]->mesh.V;
+        out->mesh.F.middleRows(triangleOffset[k], meshes[k]->mesh.F.rows()) =
+            meshes[k]->mesh.F.array() + int(vertexOffset[k]);
+    }
+    std::size_t points = 0;
+    out->strokeOffsets.push_back(0);
+    for (const Stroke &s : a.strokes)
+        out->strokeOffsets.push_back(points += s.data ? s.data->points.size() : 0);
+    out->embedding.I = Eigen::VectorXi::Constant(Eigen::Index(points), -1);
+    out->embedding.B = Eigen::MatrixX3d::Zero(Eigen::Index(points), 3);
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        for (std::size_t i = 0; i < meshStrokes[k].size(); ++i) {
+            const std::size_t s = meshStrokes[k][i];
+            const std::size_t from = meshes[k]->strokeOffsets[i], to = out->strokeOffsets[s];
+            const std::size_t count = meshes[k]->strokeOffsets[i + 1] - from;
+            for (std::size_t r = 0; r < count; ++r) {
+                const int t = meshes[k]->embedding.I(Eigen::Index(from + r));
+                out->embedding.I(Eigen::Index(to + r)) = t < 0 ? -1 : t + int(triangleOffset[k]);
+                out->embedding.B.row(Eigen::Index(to + r)) =
+                    meshes[k]->embedding.B.row(Eigen::Index(from + r));
+            }
+        }
+    }
+    // Each part's hinge: where it turns on the line under it (pivotOf), the vertex of the
+    // part's mesh nearest it and the vertex of the under line's mesh nearest that.
+    LayeredMesh layered;
+    for (const auto &[part, under] : over) {
+        const std::optional<Eigen::Vector2d> pivot =
+            pivotOf(a.strokes[part].data->points, a.strokes[under].data->points);
+        if (!pivot)
+            continue;
+        const Eigen::RowVector2d centre = pivot->transpose();
+        const auto nearestIn = [&](std::size_t k, const Eigen::RowVector2d &at) {
+            Eigen::Index best = 0;
+            (meshes[k]->mesh.V.rowwise() - at).rowwise().squaredNorm().minCoeff(&best);
+            return int(vertexOffset[k] + best);
+        };
+        const int mine = nearestIn(meshOf[part], centre);
+        const int theirs = nearestIn(meshOf[under], out->mesh.V.row(mine));
+        layered.hinges.push_back({theirs, mine});
+    }
+    layered.restTriangles = meshes[0]->mesh.F.rows();
+    for (const auto &[part, under] : over) {
+        const std::size_t k = meshOf[part];
+        layered.parts.push_back(
+            LayeredPart{part, triangleOffset[k], meshes[k]->mesh.F.rows(), std::nullopt});
+    }
+    std::sort(layered.parts.begin(), layered.parts.end(),
+              [](const LayeredPart &x, const LayeredPart &y) { return x.stroke > y.stroke; });
+    layered.meshed = std::move(out);
+    return layered;
+}
+
+// What each of A's parts drawn over others shows (DrawingFit::parts), and what A shows under
+// them (DrawingFit::underFills): A's fills over A's faces with the parts' lines left out, so
+// that the body is its own colour where an arm's top covered it.
+void layerFills(DrawingFit &fit)
+{
+    const StrokeGroup &a = fit.a;
+    if (a.fills.empty() || fit.parts.empty())
+        return;
+    const ObjectRegionsPtr shown = objectRegions(a, fit.closeGap);
+    const std::vector<int> shownFills = faceFills(*shown, a.fills);
+    fit.shownRegions = shown;
+    fit.shownFills.assign(shownFills.size(), std::nullopt);
+    for (std::size_t f = 0; f < shownFills.size(); ++f)
+        if (shownFills[f] >= 0)
+            fit.shownFills[f] = a.fills[std::size_t(shownFills[f])];
+    const auto fillAt = [&](const Eigen::Vector2d &p) -> std::optional<Fill> {
+        const int face = shown->faceAt(QPointF(p.x(), p.y()));
+        if (face < 0 || shownFills[std::size_t(face)] < 0)
+            return std::nullopt;
+        return a.fills[std::size_t(shownFills[std::size_t(face)])];
+    };
+    // A part shows the fill most of its triangles show (those under no part drawn after it).
+    const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
+    const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
+    for (LayeredPart &part : fit.parts) {
+        std::map<std::size_t, int> votes;
+        for (Eigen::Index t = part.firstTriangle; t < part.firstTriangle + part.triangles; ++t) {
+            const Eigen::Vector2d c =
+                (V.row(F(t, 0)) + V.row(F(t, 1)) + V.row(F(t, 2))).transpose() / 3.0;
+            // Under a part drawn after it, it does not show.
+            if (std::any_of(fit.parts.begin(), fit.parts.end(), [&](const LayeredPart &other) {
+                    return other.stroke > part.stroke &&
+                           insidePolygon(c, a.strokes[other.stroke].data->points);
+                }))
+                continue;
+            const int face = shown->faceAt(QPointF(c.x(), c.y()));
+            if (face >= 0)
+                ++votes[std::size_t(shownFills[std::size_t(face)] + 1)];
+        }
+        const auto most =
+            std::max_element(votes.begin(), votes.end(),
+                             [](const auto &x, const auto &y) { return x.second < y.second; });
+        if (most != votes.end() && most->first > 0)
+            part.fill = a.fills[most->first - 1];
+    }
+    // Under the parts: A without their lines.
+    StrokeGroup under = a;
+    under.strokes.clear();
+    for (std::size_t s = 0; s < a.strokes.size(); ++s)
+        if (std::none_of(fit.parts.begin(), fit.parts.end(),
+                         [s](const LayeredPart &p) { return p.stroke == s; }))
+            under.strokes.push_back(a.strokes[s]);
+    fit.underRegions = objectRegions(under, fit.closeGap);
+    fit.underFills.assign(std::size_t(fit.underRegions->faceCount()), std::nullopt);
+    // Each under face shows the fill of A's face its seed lies in, unless that is a part's
+    // (the face under an arm's top): then the fill of A's largest face within it that no part
+    // covers.
+    const auto partAt = [&](const Eigen::Vector2d &p) {
+        return std::any_of(fit.parts.begin(), fit.parts.end(), [&](const LayeredPart &part) {
+            return insidePolygon(p, a.strokes[part.stroke].data->points);
+        });
+    };
+    const geometry::Regions &shownFaces = shown->regions();
+    for (int face = 0; face < fit.underRegions->faceCount(); ++face) {
+        const geometry::Face &f = fit.underRegions->regions().faces[std::size_t(face)];
+        double largest = 0.0;
+        for (std::size_t g = 0; g < shownFaces.faces.size(); ++g) {
+            const geometry::Face &inA = shownFaces.faces[g];
+            if (shownFills[g] < 0 || partAt(inA.seed) || !(inA.area > largest) ||
+                fit.underRegions->faceAt(QPointF(inA.seed.x(), inA.seed.y())) != face)
+                continue;
+            largest = inA.area;
+            fit.underFills[std::size_t(face)] = a.fills[std::size_t(shownFills[g])];
+        }
+        if (largest == 0.0)
+            fit.underFills[std::size_t(face)] = fillAt(f.seed);
+    }
 }
 
 // Correspondence pins as the fit takes them: each A point in A's mesh.
@@ -223,6 +642,7 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
     const auto newId = [&next] { return ++next; };
     fit->a = shownDrawing(a, closeGap, newId);
     fit->b = shownDrawing(b, closeGap, newId);
+    fit->closeGap = closeGap;
     const StrokeGroup &A = fit->a;
     const StrokeGroup &B = fit->b;
     if (std::none_of(A.strokes.begin(), A.strokes.end(), inked))
@@ -237,11 +657,21 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
         skeletonBuilt = std::async(std::launch::async, [&A, closeGap] {
             return buildSkeletonRig(A, {}, std::nullopt, closeGap);
         });
-    const auto meshed = meshObject(MeshKey::of(A, closeGap));
-    if (!meshed)
-        return finbook::unexpected(
-            BetweenDrawings::tr("The first key could not be meshed: %1").arg(meshed.error()));
-    fit->meshed = *meshed;
+    if (options.layeredParts)
+        if (auto layered = layeredMesh(A, closeGap)) {
+            fit->meshed = std::move(layered->meshed);
+            fit->hinges = std::move(layered->hinges);
+            fit->parts = std::move(layered->parts);
+            fit->restTriangles = layered->restTriangles;
+            layerFills(*fit);
+        }
+    if (!fit->meshed) {
+        const auto meshed = meshObject(MeshKey::of(A, closeGap));
+        if (!meshed)
+            return finbook::unexpected(
+                BetweenDrawings::tr("The first key could not be meshed: %1").arg(meshed.error()));
+        fit->meshed = *meshed;
+    }
     const Eigen::MatrixX2d &V = fit->meshed->mesh.V;
     const Eigen::MatrixX3i &F = fit->meshed->mesh.F;
     const geometry::Embedding &all = fit->meshed->embedding;
@@ -286,7 +716,7 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
         samples.B.row(Eigen::Index(i)) = all.B.row(rows[i]);
         N.row(Eigen::Index(i)) = normals[i].transpose();
     }
-    const auto source = between::rigidFitPrecompute(V, F, samples, N);
+    const auto source = between::rigidFitPrecompute(V, F, samples, N, fit->hinges);
     if (!source)
         return finbook::unexpected(BetweenDrawings::tr("The first key's mesh cannot be fitted: %1")
                                        .arg(QString::fromStdString(source.error().message)));
@@ -345,7 +775,6 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
             skeleton.parent = built->parent;
         }
     fit->fit = between::rigidFit(*fit->source, *fit->target, fitPins, skeleton, options.fit);
-    fit->closeGap = closeGap;
     fit->pins = pins;
     return completed(std::move(fit), started);
 }
@@ -460,6 +889,70 @@ void carryStrokes(StrokeGroup &group, const Eigen::MatrixX2d &points, double kee
 
 } // namespace
 
+namespace {
+
+// The fills of an in-between of a fit with parts drawn over others (DrawingFit::parts): the
+// carried lines' faces, each showing the fill of the topmost part whose carried outline holds
+// its seed, else what A shows under the parts where the rest's carried mesh takes the seed
+// back to, else none (the space an arm swung out of, between it and the body).
+std::vector<Fill> layeredFills(const DrawingFit &fit, const StrokeGroup &carried,
+                               const Eigen::MatrixX2d &Ut)
+{
+    std::vector<Fill> out;
+    const ObjectRegionsPtr regions = objectRegions(carried, fit.closeGap);
+    const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
+    const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
+    const geometry::TriangleLocator rest(Ut, F.topRows(fit.restTriangles));
+    for (int face = 0; face < regions->faceCount(); ++face) {
+        const Eigen::Vector2d seed = regions->regions().faces[std::size_t(face)].seed;
+        std::optional<Fill> shows;
+        bool onPart = false;
+        for (const LayeredPart &part : fit.parts) { // topmost first
+            if (!insidePolygon(seed, carried.strokes[part.stroke].data->points))
+                continue;
+            onPart = true;
+            // What A shows where the part's carried mesh takes the seed back to (a stripe on a
+            // sleeve keeps its colour), else what the part shows.
+            shows = part.fill;
+            const geometry::TriangleLocator mine(Ut,
+                                                 F.middleRows(part.firstTriangle, part.triangles));
+            const geometry::Location at = mine.locate(seed);
+            if (at.inside && at.triangle >= 0) {
+                const Eigen::Index t = part.firstTriangle + at.triangle;
+                const Eigen::Vector3d &w = at.weights;
+                const Eigen::Vector2d back =
+                    (w(0) * V.row(F(t, 0)) + w(1) * V.row(F(t, 1)) + w(2) * V.row(F(t, 2)))
+                        .transpose();
+                const int inA = fit.shownRegions->faceAt(QPointF(back.x(), back.y()));
+                if (inA >= 0)
+                    shows = fit.shownFills[std::size_t(inA)];
+            }
+            break;
+        }
+        if (!onPart && fit.underRegions) {
+            const geometry::Location at = rest.locate(seed);
+            if (at.inside && at.triangle >= 0) {
+                const Eigen::Vector3d &w = at.weights;
+                const Eigen::Vector2d back =
+                    (w(0) * V.row(F(at.triangle, 0)) + w(1) * V.row(F(at.triangle, 1)) +
+                     w(2) * V.row(F(at.triangle, 2)))
+                        .transpose();
+                const int under = fit.underRegions->faceAt(QPointF(back.x(), back.y()));
+                if (under >= 0)
+                    shows = fit.underFills[std::size_t(under)];
+            }
+        }
+        if (!shows)
+            continue;
+        Fill fill = fillOfFace(*regions, face, shows->color);
+        fill.shading = shows->shading;
+        out.push_back(std::move(fill));
+    }
+    return out;
+}
+
+} // namespace
+
 StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions &options)
 {
     t = clampedTime(t);
@@ -468,6 +961,10 @@ StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions
     const double w = fadeAt(t, options);
     StrokeGroup out = fit.a;
     carryStrokes(out, geometry::applyEmbedding(fit.meshed->embedding, Ut, F), 1.0 - w);
+    if (!fit.parts.empty() && !out.fills.empty()) {
+        out.fills = layeredFills(fit, out, Ut);
+        return out;
+    }
     // The drawing as Apply Pose makes a pose of it (rig_commands.h applyPoseToDrawing): A
     // posed by the carried points shows its rest regions carried whole; the carried lines get
     // lines of no ink where a gap the pose showed closed opened on the way or colours it showed

@@ -14,11 +14,13 @@
 
 #include <finbook/deform/between/rigid_fit.h>
 #include <finbook/model/deform_setup.h>
+#include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/inbetween/inbetween_plan.h>
 #include <finbook/model/types.h>
 
 #include <QString>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -46,6 +48,9 @@ struct BetweenOptions {
     // Turn A's parts about their joints (its automatic skeleton) to B before the fit
     // (rigid_fit.h, the articulated coarse step): limbs B shows turned far are found.
     bool articulated = true;
+    // Mesh each of A's closed lines drawn over a larger one (an arm's top over the body) on its
+    // own, hinged where the two overlap (DrawingFit::meshed), rather than all of A as one.
+    bool layeredParts = true;
     deform::between::RigidFitOptions fit = drawingFitOptions();
 };
 
@@ -57,10 +62,40 @@ struct BetweenPin {
     friend bool operator==(const BetweenPin &, const BetweenPin &) = default;
 };
 
+// One of A's closed lines drawn over a larger one (DrawingFit::meshed): its stroke (index into
+// DrawingFit::a's strokes), its mesh's triangles (rows of meshed's F), and the fill it shows
+// (none: unfilled).
+struct LayeredPart {
+    std::size_t stroke = 0;
+    Eigen::Index firstTriangle = 0, triangles = 0;
+    std::optional<Fill> fill;
+};
+
 // The fit of A onto B and what the in-betweens need from it. Immutable.
 struct DrawingFit {
     StrokeGroup a, b; // the keys as shown (a posed key as its pose would be applied)
-    std::shared_ptr<const MeshedObject> meshed; // A's mesh and every A stroke point in it
+    // A's mesh and every A stroke point in it: the mesh its deformers use, or, where A has
+    // closed lines drawn over larger ones (an arm's top over the body), the rest of A's lines
+    // meshed together and each such line's inside meshed on its own, stacked (the first
+    // mesh's vertices and triangles, then each part's), so that the part turns over the other
+    // instead of bending the flesh the union of the two would make of them.
+    std::shared_ptr<const MeshedObject> meshed;
+    // Per part drawn over another, a vertex of the other's mesh and one of the part's, both
+    // where the two overlap (rows of meshed's V): the hinge the fit and the motion hold together.
+    std::vector<std::array<int, 2>> hinges;
+    // The parts drawn over others, topmost (drawn last) first; the rest's mesh is meshed's
+    // first restTriangles triangles. An in-between's fills are those its carried faces show:
+    // the topmost part's over it (shownFills), else what A shows under the parts (A's faces with
+    // the parts' lines left out, underRegions, and the fill each shows, underFills) where the
+    // rest's mesh takes it back to.
+    std::vector<LayeredPart> parts;
+    Eigen::Index restTriangles = 0;
+    ObjectRegionsPtr underRegions;
+    std::vector<std::optional<Fill>> underFills;
+    // A's faces as shown and the fill each shows: a face on a part shows what A shows where the
+    // part's carried mesh takes it back to (a stripe on a sleeve keeps its colour).
+    ObjectRegionsPtr shownRegions;
+    std::vector<std::optional<Fill>> shownFills;
     std::shared_ptr<const deform::between::RigidFitSource> source;
     std::shared_ptr<const deform::between::RigidFitTarget> target;
     deform::between::RigidFitResult fit;
