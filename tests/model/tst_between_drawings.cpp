@@ -550,6 +550,27 @@ void TestBetweenDrawings::anArmDrawnOverTheBodyTurnsAsAPiece()
     top /= inside;
     QVERIFY(!armMid.containsPoint(top, Qt::OddEvenFill)); // the arm has left it
     QCOMPARE(colourAt(top), body);
+    // A correspondence pin on the arm's top, where it lies over the body, is on the arm (the
+    // part drawn on top): pulled 20 px outwards, it moves the arm's line, not the body's.
+    std::size_t nearest = 0;
+    for (std::size_t k = 0; k < std::size_t(armA.size()); ++k)
+        if (QLineF(armA[int(k)], top).length() < QLineF(armA[int(nearest)], top).length())
+            nearest = k;
+    const QPointF from = fitted(fit, 3, nearest);
+    const QLineF outwards(centre, from);
+    const QPointF to = from + QPointF(outwards.dx(), outwards.dy()) * (20.0 / outwards.length());
+    const auto pinned = refitDrawings(fit, {BetweenPin{top, to}});
+    QVERIFY(pinned);
+    const auto moved = [&](std::size_t s) {
+        double sum = 0.0;
+        const std::size_t n = a.strokes[s].data->points.size();
+        for (std::size_t k = 0; k < n; ++k)
+            sum += QLineF(fitted(fit, s, k), fitted(**pinned, s, k)).length();
+        return sum / double(n);
+    };
+    qInfo("pinned: the arm's line moved %.1f px, the body's %.1f px", moved(3), moved(0));
+    QVERIFY2(moved(3) > 2.0 * moved(0),
+             qPrintable(QStringLiteral("arm %1, body %2").arg(moved(3)).arg(moved(0))));
 }
 
 void TestBetweenDrawings::inbetweensStartOnAAndLandOnB()

@@ -148,6 +148,38 @@ QString failure(const deform::between::RigidFitResult &r)
     }
 }
 
+// Points embedded in A's mesh posed as V (rows of meshed's V): with parts drawn over others,
+// each in the topmost part whose triangles hold it (a click on an arm's top over the body means
+// the arm), else in the rest's, else on the nearest triangle as geometry::embed puts it.
+geometry::Embedding embedOnTop(const DrawingFit &fit, const Eigen::MatrixX2d &V,
+                               const Eigen::MatrixX2d &points)
+{
+    const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
+    geometry::Embedding out = geometry::embed(V, F, points);
+    if (fit.parts.empty())
+        return out;
+    std::vector<std::pair<Eigen::Index, geometry::TriangleLocator>> layers;
+    for (const LayeredPart &part : fit.parts)
+        layers.emplace_back(
+            part.firstTriangle,
+            geometry::TriangleLocator(V, F.middleRows(part.firstTriangle, part.triangles)));
+    layers.emplace_back(0, geometry::TriangleLocator(V, F.topRows(fit.restTriangles)));
+    for (Eigen::Index i = 0; i < points.rows(); ++i) {
+        const Eigen::Vector2d p = points.row(i).transpose();
+        if (!p.allFinite())
+            continue;
+        for (const auto &[first, locator] : layers) {
+            const geometry::Location at = locator.locate(p);
+            if (at.inside && at.triangle >= 0) {
+                out.I(i) = int(first) + at.triangle;
+                out.B.row(i) = at.weights.transpose();
+                break;
+            }
+        }
+    }
+    return out;
+}
+
 // The motion and B's points in the fitted mesh, once the fit is made. Empty, or what failed.
 QString finish(DrawingFit &fitted)
 {
@@ -175,7 +207,7 @@ QString finish(DrawingFit &fitted)
     // embed snaps a point outside the mesh onto its nearest triangle; unclamped coordinates
     // in that triangle put it back exactly where B drew it.
     geometry::Embedding &inFit = fit->bInFit;
-    inFit = geometry::embed(r.U, F, BP);
+    inFit = embedOnTop(*fit, r.U, BP);
     for (Eigen::Index i = 0; i < BP.rows(); ++i) {
         const int t = inFit.I(i);
         if (t < 0)
@@ -599,8 +631,7 @@ void layerFills(DrawingFit &fit)
 }
 
 // Correspondence pins as the fit takes them: each A point in A's mesh.
-deform::between::FitPins fitPinsOf(const std::vector<BetweenPin> &pins, const Eigen::MatrixX2d &V,
-                                   const Eigen::MatrixX3i &F)
+deform::between::FitPins fitPinsOf(const std::vector<BetweenPin> &pins, const DrawingFit &fit)
 {
     deform::between::FitPins fitPins;
     if (pins.empty())
@@ -611,7 +642,7 @@ deform::between::FitPins fitPinsOf(const std::vector<BetweenPin> &pins, const Ei
         onA.row(Eigen::Index(i)) << pins[i].onA.x(), pins[i].onA.y();
         fitPins.targets.row(Eigen::Index(i)) << pins[i].onB.x(), pins[i].onB.y();
     }
-    fitPins.where = geometry::embed(V, F, onA);
+    fitPins.where = embedOnTop(fit, fit.meshed->mesh.V, onA);
     return fitPins;
 }
 
@@ -766,7 +797,7 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
     }
     fit->target = between::rigidFitTarget(P, NB);
 
-    const between::FitPins fitPins = fitPinsOf(pins, V, F);
+    const between::FitPins fitPins = fitPinsOf(pins, *fit);
     between::FitSkeleton &skeleton = fit->skeleton;
     if (skeletonBuilt.valid())
         if (const auto built = skeletonBuilt.get()) {
@@ -786,9 +817,8 @@ refitDrawings(const DrawingFit &previous, const std::vector<BetweenPin> &pins,
     const auto started = std::chrono::steady_clock::now();
     auto fit = std::make_shared<DrawingFit>(previous);
     fit->pins = pins;
-    fit->fit = deform::between::rigidRefit(
-        *fit->source, *fit->target, fitPinsOf(pins, fit->meshed->mesh.V, fit->meshed->mesh.F),
-        previous.fit, options.fit);
+    fit->fit = deform::between::rigidRefit(*fit->source, *fit->target, fitPinsOf(pins, *fit),
+                                           previous.fit, options.fit);
     return completed(std::move(fit), started);
 }
 
