@@ -23,6 +23,9 @@ constexpr double kCapShare = 0.05;   // of B's diagonal: a sample's distance cou
 constexpr int kMaxPartSamples = 250; // evenly taken from a part's samples
 constexpr int kMinPartSamples = 6;   // fewer: the part is not turned on its own
 constexpr int kBodyIterations = 15;  // rigid ICP steps placing the body
+// B's points within this share of B's diagonal of a sample off a hinged piece are not the
+// piece's to lie on (turnHingedPieces).
+constexpr double kTakenShare = 0.025;
 
 double segmentDistance2(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
                         const Eigen::Vector2d &b)
@@ -226,6 +229,164 @@ Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTa
     for (Eigen::Index v = 0; v < source.V.rows(); ++v) {
         const Eigen::Vector2d x = source.V.row(v).transpose();
         U.row(v) = placement[std::size_t(nearestBone(x))].apply(x).transpose();
+    }
+    return U;
+}
+
+Eigen::MatrixX2d turnHingedPieces(const RigidFitSource &source, const RigidFitTarget &target,
+                                  Eigen::MatrixX2d U, const RigidFitOptions &options)
+{
+    if (target.grid.empty())
+        return U;
+    const double cap = kCapShare * std::max(target.diagonal, 1e-9);
+    // First the drawing placed by what is not on a piece: a start aligned on all of A is a
+    // compromise between the body and an arm B shows raised, and a hinge it leaves 30 px off
+    // the shoulder turns the arm onto the wrong lines.
+    {
+        std::vector<bool> onPiece(std::size_t(source.sampleCount()), false);
+        for (const std::vector<int> &own : source.hingedSamples)
+            for (const int s : own)
+                onPiece[std::size_t(s)] = true;
+        std::vector<int> off;
+        for (int s = 0; s < source.sampleCount(); ++s)
+            if (!onPiece[std::size_t(s)])
+                off.push_back(s);
+        if (int(off.size()) >= kMinPartSamples) {
+            const Eigen::Matrix2d turn =
+                procrustes(source.V, U, Eigen::VectorXd::Ones(U.rows()), false).linear;
+            for (int iteration = 0; iteration < kBodyIterations; ++iteration) {
+                const Eigen::MatrixX2d X = samplePositions(source, U);
+                Eigen::MatrixX2d from(Eigen::Index(off.size()), 2), to(from.rows(), 2);
+                Eigen::VectorXd w = Eigen::VectorXd::Zero(from.rows());
+                for (std::size_t i = 0; i < off.size(); ++i) {
+                    const Eigen::Vector2d x = X.row(off[i]).transpose();
+                    Eigen::Vector2d n = turn * source.N.row(off[i]).transpose();
+                    n = n.norm() > 0.0 ? Eigen::Vector2d(n.normalized()) : Eigen::Vector2d::Zero();
+                    double d = 0.0;
+                    const int row = target.grid.nearest(x, n, options.normalAgreement, d, cap);
+                    from.row(Eigen::Index(i)) = x.transpose();
+                    to.row(Eigen::Index(i)) =
+                        row >= 0 ? Eigen::RowVector2d(target.P.row(row)) : x.transpose();
+                    w(Eigen::Index(i)) = row >= 0 ? 1.0 : 0.0;
+                }
+                if (w.sum() < kMinPartSamples)
+                    break;
+                const Similarity step = procrustes(from, to, w, false);
+                U = step.apply(U);
+                if ((step.linear - Eigen::Matrix2d::Identity()).norm() * target.diagonal +
+                        step.translation.norm() <
+                    1e-3 * target.diagonal)
+                    break;
+            }
+        }
+    }
+    for (std::size_t h = 0; h < source.hinges.size(); ++h) {
+        const auto &[under, piece] = source.hinges[h];
+        const std::vector<int> &vertices = source.hingedVertices[h];
+        std::vector<int> own = source.hingedSamples[h];
+        if (int(own.size()) < kMinPartSamples || vertices.empty())
+            continue;
+        if (int(own.size()) > kMaxPartSamples) {
+            std::vector<int> taken;
+            for (int i = 0; i < kMaxPartSamples; ++i)
+                taken.push_back(own[std::size_t(i) * own.size() / kMaxPartSamples]);
+            own.swap(taken);
+        }
+        // What the rest of A lies on already is not the piece's: B's points nearer than
+        // kTakenShare of B's diagonal to a sample of A off the piece (an arm searched over the
+        // body would otherwise lie on the body's lines as well as on its own).
+        std::vector<bool> mine(std::size_t(source.sampleCount()), false);
+        for (const int s : source.hingedSamples[h])
+            mine[std::size_t(s)] = true;
+        const Eigen::MatrixX2d X = samplePositions(source, U);
+        std::vector<int> others;
+        for (int s = 0; s < source.sampleCount(); ++s)
+            if (!mine[std::size_t(s)])
+                others.push_back(s);
+        Eigen::MatrixX2d elsewhere(Eigen::Index(others.size()), 2);
+        for (std::size_t i = 0; i < others.size(); ++i)
+            elsewhere.row(Eigen::Index(i)) = X.row(others[i]);
+        const PointGrid elsewhereGrid(elsewhere, Eigen::MatrixX2d());
+        std::vector<Eigen::Index> left;
+        for (Eigen::Index b = 0; b < target.P.rows(); ++b) {
+            double d = std::numeric_limits<double>::infinity();
+            if (elsewhereGrid.empty() ||
+                elsewhereGrid.nearest(target.P.row(b).transpose(), Eigen::Vector2d::Zero(), 0.0, d,
+                                      kTakenShare * target.diagonal) < 0)
+                left.push_back(b);
+        }
+        if (left.empty())
+            continue;
+        Eigen::MatrixX2d leftP(Eigen::Index(left.size()), 2), leftN(leftP.rows(), 2);
+        for (std::size_t i = 0; i < left.size(); ++i) {
+            leftP.row(Eigen::Index(i)) = target.P.row(left[i]);
+            leftN.row(Eigen::Index(i)) = target.N.row(left[i]);
+        }
+        const PointGrid free(leftP, leftN);
+        // The turn it has now (from rest, over its vertices).
+        Eigen::MatrixX2d rest(Eigen::Index(vertices.size()), 2), now(rest.rows(), 2);
+        for (std::size_t i = 0; i < vertices.size(); ++i) {
+            rest.row(Eigen::Index(i)) = source.V.row(vertices[i]);
+            now.row(Eigen::Index(i)) = U.row(vertices[i]);
+        }
+        const Eigen::Matrix2d turn =
+            procrustes(rest, now, Eigen::VectorXd::Ones(rest.rows()), false).linear;
+        std::vector<Eigen::Vector2d> normal;
+        for (const int s : own) {
+            const Eigen::Vector2d n = turn * source.N.row(s).transpose();
+            normal.push_back(n.norm() > 0.0 ? Eigen::Vector2d(n.normalized())
+                                            : Eigen::Vector2d::Zero());
+        }
+        // The best turn about a pivot, the piece first moved by `shift`; its cost.
+        struct Turn {
+            Eigen::Vector2d shift, pivot;
+            double angle = 0.0, cost = std::numeric_limits<double>::infinity();
+        };
+        const auto search = [&](const Eigen::Vector2d &shift, const Eigen::Vector2d &pivot) {
+            std::vector<Eigen::Vector2d> at;
+            for (const int s : own) {
+                Eigen::Vector2d x = shift;
+                for (int c = 0; c < 3; ++c)
+                    x += source.B(s, c) * U.row(source.F(source.I(s), c)).transpose();
+                at.push_back(x - pivot);
+            }
+            const auto cost = [&](double angle) {
+                const Eigen::Matrix2d R = Eigen::Rotation2Dd(angle).toRotationMatrix();
+                double sum = 0.0;
+                for (std::size_t i = 0; i < at.size(); ++i) {
+                    double d = 0.0;
+                    const int row = free.nearest(pivot + R * at[i], R * normal[i],
+                                                 options.normalAgreement, d, cap);
+                    sum += row < 0 ? cap : std::min(d, cap);
+                }
+                return sum;
+            };
+            Turn best{shift, pivot, 0.0, cost(0.0)};
+            const auto consider = [&](double angle) {
+                const double c = cost(angle);
+                if (c < best.cost - 1e-9 ||
+                    (c <= best.cost + 1e-9 && std::abs(angle) < std::abs(best.angle))) {
+                    best.angle = angle;
+                    best.cost = c;
+                }
+            };
+            for (double a = -std::numbers::pi; a < std::numbers::pi - 1e-12; a += kCoarseStep)
+                consider(a);
+            const double around = best.angle;
+            for (double a = around - kCoarseStep; a <= around + kCoarseStep + 1e-12; a += kFineStep)
+                consider(a);
+            return best;
+        };
+        // About its own hinge vertex where it is now, or moved onto the other piece's (a start
+        // that turned it with a bone of the whole drawing's skeleton may have left it off).
+        const Turn kept = search(Eigen::Vector2d::Zero(), U.row(piece).transpose());
+        const Turn onto =
+            search((U.row(under) - U.row(piece)).transpose(), U.row(under).transpose());
+        const Turn &best = onto.cost < kept.cost ? onto : kept;
+        const Eigen::Matrix2d R = Eigen::Rotation2Dd(best.angle).toRotationMatrix();
+        for (const int v : vertices)
+            U.row(v) =
+                (best.pivot + R * (U.row(v).transpose() + best.shift - best.pivot)).transpose();
     }
     return U;
 }

@@ -242,6 +242,19 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
         Run run{stateFrom(U0, source.F.rows(), rotation, options.allowScale ? scale : 1.0), r};
         runStages(source, target, pins, options, first, options.stageIterations, run.state,
                   run.fit);
+        // Pieces hinged to others (an arm drawn over the body) are turned about their hinges
+        // once the stiff stage has laid the body on B's (detail::turnHingedPieces), and the
+        // stage is run again from there.
+        if (!source.hinges.empty() && run.fit.status != FitStatus::SolveFailed) {
+            const Eigen::MatrixX2d turned =
+                detail::turnHingedPieces(source, target, toMatrix(run.state.u), options);
+            run.state.u.real() = turned.col(0);
+            run.state.u.imag() = turned.col(1);
+            const int before = run.fit.iterations;
+            runStages(source, target, pins, options, first, options.stageIterations, run.state,
+                      run.fit);
+            run.fit.iterations += before;
+        }
         detail::reportResidual(source, target, options, run.fit);
         return run;
     };

@@ -33,8 +33,10 @@ struct RigidFitSource {
     // has total weight n: D²·n / area (see RigidFitOptions::stiffness).
     double stiffnessUnit = 1.0;
     detail::MeshSystem system; // analysed, not factored: every fit copies it
-    // Hinges between pieces of a mesh cut apart (rigidFitPrecompute), as the system's links.
+    // Hinges between pieces meshed apart (rigidFitPrecompute), as the system's links; per hinge
+    // the vertices of the piece its second vertex lies in, and that piece's samples.
     std::vector<std::array<int, 2>> hinges;
+    std::vector<std::vector<int>> hingedVertices, hingedSamples;
 
     int vertexCount() const { return int(V.rows()); }
     int sampleCount() const { return int(I.size()); }
@@ -92,6 +94,14 @@ enum class ArticulatedStart { Subtrees, BodyFirst };
 Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTarget &target,
                                   const Similarity &global, const FitSkeleton &skeleton,
                                   const RigidFitOptions &options, ArticulatedStart style);
+// Each piece hinged to another (RigidFitSource::hinges), in the hinges' order: moved onto its
+// hinge where U has the other piece, then turned about it by the angle in ±180° that lays its
+// own samples best on B (capped nearest-agreeing distances, as articulatedStart judges a bone;
+// ties to the smaller turn). A piece is a rigid part drawn over another, with a known pivot, so
+// it can be searched all the way round: an arm B shows across the chest is found from one
+// hanging at the side.
+Eigen::MatrixX2d turnHingedPieces(const RigidFitSource &source, const RigidFitTarget &target,
+                                  Eigen::MatrixX2d U, const RigidFitOptions &options);
 // Pins valid for this source: triangles in range, finite weights and targets.
 bool pinsValid(const RigidFitSource &source, const FitPins &pins);
 

@@ -56,7 +56,9 @@ RigidFitSourceResult rigidFitPrecompute(const Eigen::MatrixX2d &V, const Eigen::
                        0.0,
                        1.0,
                        detail::MeshSystem(int(V.rows()), F, {}, hinges),
-                       hinges});
+                       hinges,
+                       {},
+                       {}});
     for (Eigen::Index s = 0; s < k; ++s) {
         const double len = N.row(s).norm();
         source->N.row(s) =
@@ -84,6 +86,21 @@ RigidFitSourceResult rigidFitPrecompute(const Eigen::MatrixX2d &V, const Eigen::
                          ? source->sampleDiagonal
                          : (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
     source->stiffnessUnit = D * D * double(V.rows()) / source->area;
+    if (!hinges.empty()) {
+        int parts = 0;
+        const Eigen::VectorXi label = deform::detail::componentLabels(V.rows(), F, parts);
+        for (const auto &[under, piece] : hinges) {
+            std::vector<int> vertices, own;
+            for (Eigen::Index v = 0; v < V.rows(); ++v)
+                if (label(v) == label(piece))
+                    vertices.push_back(int(v));
+            for (Eigen::Index s = 0; s < k; ++s)
+                if (label(F(samples.I(s), 0)) == label(piece))
+                    own.push_back(int(s));
+            source->hingedVertices.push_back(std::move(vertices));
+            source->hingedSamples.push_back(std::move(own));
+        }
+    }
     return std::shared_ptr<const RigidFitSource>(std::move(source));
 }
 
