@@ -2,6 +2,7 @@
 // (a body with an arm) drawn as key A, and key B drawn again from it — moved, or with the arm
 // turned — resampled, its lines split, reversed and shuffled. The fit finds where A went; the
 // in-betweens start on A's lines, land on B's, keep the arm's length, and go in as one undo step.
+#include "bake_support.h"
 #include "stroke_support.h"
 
 #include <finbook/deform/between/arap_interpolation.h>
@@ -200,6 +201,8 @@ private slots:
     void anArmSwungOutInTheAppIsFound();
     void anArmDrawnOverTheBodyTurnsAsAPiece_data();
     void anArmDrawnOverTheBodyTurnsAsAPiece();
+    void aBodyDrawnOpenUnderAnArmStaysClosed();
+    void aBodyClosedByAPartStaysClosedAsThePartTurns();
     void inbetweensStartOnAAndLandOnB();
     void generatedInbetweensAreOneUndoStep();
 };
@@ -448,6 +451,8 @@ void TestBetweenDrawings::anArmDrawnOverTheBodyTurnsAsAPiece_data()
     QTest::newRow("raised (120°)") << QString();
     QTest::newRow("out to the side, drawn in the app") << QStringLiteral("between_arm_out.finbook");
     QTest::newRow("swung out, drawn in the app") << QStringLiteral("between_arm_swing.finbook");
+    QTest::newRow("across the chest, drawn in the app")
+        << QStringLiteral("between_arm_across.finbook");
 }
 
 void TestBetweenDrawings::anArmDrawnOverTheBodyTurnsAsAPiece()
@@ -485,16 +490,10 @@ void TestBetweenDrawings::anArmDrawnOverTheBodyTurnsAsAPiece()
             out << pointOf(p);
         return out;
     };
-    // The arm (stroke 3) as a piece: its farthest two points as far apart, and its direction
-    // from the body's centre to its far end turned half of A's to B's.
+    // The arm (stroke 3) as a piece: its farthest two points as far apart, its hand (A's point
+    // farthest from the body's centre) carried onto B's arm, and half way turned about the
+    // body's centre by half as much as at the end.
     const QPointF centre = line(a, 0).boundingRect().center();
-    const auto farthest = [&](const QPolygonF &arm) {
-        QPointF far = arm.front();
-        for (const QPointF &p : arm)
-            if (QLineF(centre, p).length() > QLineF(centre, far).length())
-                far = p;
-        return far;
-    };
     const auto span = [](const QPolygonF &arm) {
         double most = 0.0;
         for (const QPointF &p : arm)
@@ -505,18 +504,28 @@ void TestBetweenDrawings::anArmDrawnOverTheBodyTurnsAsAPiece()
     const QPolygonF armA = line(a, 3), armMid = line(mid, 3), armB = line(b, 3);
     QVERIFY2(std::abs(span(armMid) / span(armA) - 1.0) < 0.03,
              qPrintable(QString::number(span(armMid) / span(armA))));
-    const auto angleOf = [&](const QPolygonF &arm) {
-        return QLineF(centre, farthest(arm)).angle();
+    int hand = 0;
+    for (int k = 0; k < int(armA.size()); ++k)
+        if (QLineF(centre, armA[k]).length() > QLineF(centre, armA[hand]).length())
+            hand = k;
+    const QPointF landed = line(betweenDrawing(fit, 1.0, noFade), 3)[hand];
+    double offB = std::numeric_limits<double>::infinity();
+    for (const QPointF &p : armB)
+        offB = std::min(offB, QLineF(p, landed).length());
+    QVERIFY2(offB < 0.1 * span(armA), qPrintable(QString::number(offB)));
+    const auto turnTo = [&](QPointF p) {
+        return std::remainder(QLineF(centre, p).angle() - QLineF(centre, armA[hand]).angle(),
+                              360.0);
     };
-    const double whole = std::remainder(angleOf(armB) - angleOf(armA), 360.0);
-    const double half = std::remainder(angleOf(armMid) - angleOf(armA), 360.0);
-    qInfo("arm turned %.1f° of %.1f° half way", half, whole);
+    const double whole = turnTo(landed), half = turnTo(armMid[hand]);
+    qInfo("arm turned %.1f° of %.1f° half way; its hand lands %.1f px from B's arm", half, whole,
+          offB);
     QVERIFY2(std::abs(half - 0.5 * whole) < 0.15 * std::abs(whole) + 2.0,
              qPrintable(QStringLiteral("%1 of %2").arg(half).arg(whole)));
     if (a.fills.empty())
         return;
     // Fills: every fill of the in-between lies on a part as carried (body, head or an arm), and
-    // where A's arm top lay over the body, now uncovered, the body's colour shows.
+    // where A's arm top lay over the body the body's colour shows once the arm has left it.
     const ObjectRegionsPtr regions = objectRegions(mid, closeGap);
     const std::vector<int> shows = faceFills(*regions, mid.fills);
     const auto colourAt = [&](QPointF p) -> std::optional<QRgb> {
@@ -548,8 +557,10 @@ void TestBetweenDrawings::anArmDrawnOverTheBodyTurnsAsAPiece()
         }
     QVERIFY(inside > 0);
     top /= inside;
-    QVERIFY(!armMid.containsPoint(top, Qt::OddEvenFill)); // the arm has left it
-    QCOMPARE(colourAt(top), body);
+    if (!armMid.containsPoint(top, Qt::OddEvenFill)) // the arm has left it
+        QCOMPARE(colourAt(top), body);
+    else // swung across the chest: the arm, drawn on top, still covers it
+        QVERIFY(colourAt(top) && colourAt(top) != body);
     // A correspondence pin on the arm's top, where it lies over the body, is on the arm (the
     // part drawn on top): pulled 20 px outwards, it moves the arm's line, not the body's.
     std::size_t nearest = 0;
@@ -571,6 +582,135 @@ void TestBetweenDrawings::anArmDrawnOverTheBodyTurnsAsAPiece()
     qInfo("pinned: the arm's line moved %.1f px, the body's %.1f px", moved(3), moved(0));
     QVERIFY2(moved(3) > 2.0 * moved(0),
              qPrintable(QStringLiteral("arm %1, body %2").arg(moved(3)).arg(moved(0))));
+}
+
+void TestBetweenDrawings::aBodyDrawnOpenUnderAnArmStaysClosed()
+{
+    // The body's outline drawn with a gap where the right arm's top covers it (the pen lifted
+    // under the arm): at rest the arm's lines close the body. As the arm swings out, the body
+    // keeps a region of its own in its colour. Meshed with the automatic gap of the body and
+    // head alone (smaller than A's, which the arms' reach widens), the body's mesh was its ink
+    // ring only, so no in-between found its inside and the body lost its fill.
+    StrokeGroup a = character({830, 560}, 3.0, 0.0, 1);
+    {
+        const std::vector<StrokePoint> &ring = a.strokes[0].data->points;
+        const QPointF under(768, 408); // on the body's outline, under the arm's top
+        std::vector<bool> gone(ring.size());
+        for (std::size_t k = 0; k < ring.size(); ++k)
+            gone[k] = QLineF(pointOf(ring[k]), under).length() < 10.0;
+        std::size_t last = 0;
+        for (std::size_t k = 0; k < ring.size(); ++k)
+            if (gone[k])
+                last = k;
+        auto open = std::make_shared<StrokeData>(*a.strokes[0].data);
+        open->points.clear();
+        for (std::size_t i = 1; i < ring.size(); ++i) { // from after the gap round to before it
+            const std::size_t k = (last + i) % (ring.size() - 1); // the ring's last = its first
+            if (!gone[k])
+                open->points.push_back(ring[k]);
+        }
+        QVERIFY(open->points.size() + 4 < ring.size());
+        a.strokes[0].data = std::move(open);
+    }
+    const ObjectRegionsPtr rest = objectRegions(a, -1.0);
+    const auto fillAt = [&](QPointF p, QRgb colour) {
+        const int face = rest->faceAt(p);
+        QVERIFY(face >= 0);
+        a.fills.push_back(fillOfFace(*rest, face, colour));
+    };
+    const QRgb blue = 0xff3060c0, orange = 0xfff09020;
+    fillAt({720, 500}, blue);
+    fillAt({815, 520}, orange); // the right arm (its top over the body is the body's face)
+    fillAt({625, 520}, orange); // the left arm
+    const double bodyArea = rest->regions().faces[std::size_t(rest->faceAt({720, 500}))].area;
+    const StrokeGroup b = character({900, 420}, 4.1, 2.0, 100);
+    const auto made = fitDrawings(a, b, -1.0);
+    QVERIFY2(made, made ? "" : qPrintable(made.error()));
+    QCOMPARE((*made)->parts.size(), std::size_t(2));
+    BetweenOptions noFade;
+    noFade.crossFade = 0.0;
+    for (const double t : {0.25, 0.5, 0.75}) {
+        const StrokeGroup g = betweenDrawing(**made, t, noFade);
+        const ObjectRegionsPtr regions = objectRegions(g, -1.0);
+        const int body = regions->faceAt({720, 500});
+        QVERIFY(body >= 0);
+        const double area = regions->regions().faces[std::size_t(body)].area;
+        QVERIFY2(std::abs(area / bodyArea - 1.0) < 0.15,
+                 qPrintable(QStringLiteral("t %1: the body's region %2 of %3 px²")
+                                .arg(t)
+                                .arg(area)
+                                .arg(bodyArea)));
+        const std::vector<int> shows = faceFills(*regions, g.fills);
+        QVERIFY(shows[std::size_t(body)] >= 0);
+        QCOMPARE(g.fills[std::size_t(shows[std::size_t(body)])].color, blue);
+    }
+}
+
+void TestBetweenDrawings::aBodyClosedByAPartStaysClosedAsThePartTurns()
+{
+    // tests/data/quickdraw_fish_5549221702795264.json: the tail, a closed line, drawn over the
+    // body's end, and the body's outline left open where the tail's lines cross it. Turned, the
+    // tail no longer closes the body: without the gap the regions close under the parts (A's
+    // lines without the tail's), the body's region ran into the tail's and took its colour
+    // (the tail went red at t = 0.25 in finbook-bench between's sheet).
+    QString error;
+    const auto lines = testing::readDrawing(
+        QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/quickdraw_fish_5549221702795264.json"),
+        &error);
+    QVERIFY2(lines.size() == 4, qPrintable(error));
+    Document doc;
+    const Id g = testing::drawingDocument(doc, lines);
+    const StrokeGroup a = *doc.group(g);
+    const double closeGap = doc.settings().closeGap;
+    QCOMPARE(a.fills.size(), std::size_t(2));
+    StrokeGroup b = a;
+    b.fills.clear();
+    {
+        auto tail = std::make_shared<StrokeData>(*b.strokes[0].data);
+        const QPointF pivot(193, 234);
+        QTransform turn;
+        turn.translate(pivot.x(), pivot.y()).rotate(30.0).translate(-pivot.x(), -pivot.y());
+        for (StrokePoint &p : tail->points) {
+            const QPointF q = turn.map(pointOf(p));
+            p.x = float(q.x());
+            p.y = float(q.y());
+        }
+        b.strokes[0].data = std::move(tail);
+    }
+    const auto made = fitDrawings(a, b, closeGap);
+    QVERIFY2(made, made ? "" : qPrintable(made.error()));
+    QCOMPARE((*made)->parts.size(), std::size_t(1));
+    const ObjectRegionsPtr rest = objectRegions(a, closeGap);
+    const QPointF inBody(132, 221);
+    const int bodyFace = rest->faceAt(inBody);
+    QVERIFY(bodyFace >= 0);
+    const double bodyArea = rest->regions().faces[std::size_t(bodyFace)].area;
+    const QRgb bodyColour =
+        a.fills[std::size_t(faceFills(*rest, a.fills)[std::size_t(bodyFace)])].color;
+    BetweenOptions noFade;
+    noFade.crossFade = 0.0;
+    for (const double t : {0.25, 0.5, 0.75}) {
+        const StrokeGroup mid = betweenDrawing(**made, t, noFade);
+        const ObjectRegionsPtr regions = objectRegions(mid, closeGap);
+        const int body = regions->faceAt(inBody);
+        QVERIFY(body >= 0);
+        const double area = regions->regions().faces[std::size_t(body)].area;
+        QVERIFY2(std::abs(area / bodyArea - 1.0) < 0.15,
+                 qPrintable(QStringLiteral("t %1: the body's region %2 of %3 px²")
+                                .arg(t)
+                                .arg(area)
+                                .arg(bodyArea)));
+        const std::vector<int> shows = faceFills(*regions, mid.fills);
+        QVERIFY(shows[std::size_t(body)] >= 0);
+        QCOMPARE(mid.fills[std::size_t(shows[std::size_t(body)])].color, bodyColour);
+        // The tail's own region, in another colour.
+        QPolygonF tail;
+        for (const StrokePoint &p : mid.strokes[0].data->points)
+            tail << pointOf(p);
+        const int tailFace = regions->faceAt(tail.boundingRect().center());
+        QVERIFY(tailFace >= 0 && tailFace != body && shows[std::size_t(tailFace)] >= 0);
+        QVERIFY(mid.fills[std::size_t(shows[std::size_t(tailFace)])].color != bodyColour);
+    }
 }
 
 void TestBetweenDrawings::inbetweensStartOnAAndLandOnB()

@@ -416,9 +416,20 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
         bool touched = false;
         std::vector<std::size_t> held;
         for (std::size_t s = 0; s < a.strokes.size() && !touched; ++s) {
-            if (s == part || s == under || over.count(s) || !inked(a.strokes[s]))
+            if (s == part || s == under || over.count(s) || !a.strokes[s].data ||
+                a.strokes[s].data->points.size() < 2)
                 continue;
             const std::vector<StrokePoint> &line = a.strokes[s].data->points;
+            if (!inked(a.strokes[s])) {
+                // A line of no ink (a gap closer) with both ends on the part closes the part's
+                // own gap: it goes with it, or the gap opens as the part turns.
+                const auto onPart = [&](const StrokePoint &end) {
+                    return distanceTo({end}, outline) <= reach;
+                };
+                if (onPart(line.front()) && onPart(line.back()))
+                    held.push_back(s);
+                continue;
+            }
             if (!boundsOf(line)
                      .adjusted(-reach, -reach, reach, reach)
                      .intersects(boundsOf(outline)))
@@ -462,10 +473,13 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
     // The rest first; each part then as finely as the rest (the vertices a mesh aims for are
     // the same whatever its size, so a part's density goes with the root of its share of the
     // rest's area), so the stack has about the vertices the whole would have.
+    // Each meshed with the gap A's regions close (the automatic one follows the drawing's
+    // size, and a body drawn open under an arm's top must still close without the arm).
+    const double gap = objectRegions(a, closeGap)->regions().closeGap;
     std::vector<std::shared_ptr<const MeshedObject>> meshes;
     double restArea = 0.0;
     for (const std::vector<std::size_t> &strokes : meshStrokes) {
-        MeshKey key = MeshKey::of(a, closeGap);
+        MeshKey key = MeshKey::of(a, gap);
         key.strokes.clear();
         for (const std::size_t s : strokes)
             key.strokes.push_back(a.strokes[s].data);
@@ -551,6 +565,38 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
     return layered;
 }
 
+// The point of stroke s of g nearest p: its segment and the share along it.
+LineAnchor anchorOn(const StrokeGroup &g, std::size_t s, const Eigen::Vector2d &p)
+{
+    LineAnchor best{s, 0, 0.0};
+    const std::vector<StrokePoint> &points = g.strokes[s].data->points;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+        const Eigen::Vector2d a(points[k].x, points[k].y), b(points[k + 1].x, points[k + 1].y);
+        const Eigen::Vector2d d = b - a;
+        const double length = d.squaredNorm();
+        const double t = length > 0.0 ? std::clamp((p - a).dot(d) / length, 0.0, 1.0) : 0.0;
+        const double distance = (p - (a + t * d)).norm();
+        if (distance < nearest) {
+            nearest = distance;
+            best = LineAnchor{s, k, t};
+        }
+    }
+    return best;
+}
+
+// Where an anchor lies on g's strokes (the same strokes, moved).
+QPointF pointAt(const StrokeGroup &g, const LineAnchor &at)
+{
+    const std::vector<StrokePoint> &points = g.strokes[at.stroke].data->points;
+    if (points.empty())
+        return {};
+    const std::size_t k = std::min(at.segment, points.size() - 1);
+    const std::size_t next = std::min(k + 1, points.size() - 1);
+    return QPointF((1.0 - at.share) * points[k].x + at.share * points[next].x,
+                   (1.0 - at.share) * points[k].y + at.share * points[next].y);
+}
+
 // What each of A's parts drawn over others shows (DrawingFit::parts), and what A shows under
 // them (DrawingFit::underFills): A's fills over A's faces with the parts' lines left out, so
 // that the body is its own colour where an arm's top covered it.
@@ -603,7 +649,27 @@ void layerFills(DrawingFit &fit)
         if (std::none_of(fit.parts.begin(), fit.parts.end(),
                          [s](const LayeredPart &p) { return p.stroke == s; }))
             under.strokes.push_back(a.strokes[s]);
-    fit.underRegions = objectRegions(under, fit.closeGap);
+    // The gap A's regions closed (the automatic one follows the drawing's size, which the
+    // parts' lines are part of).
+    fit.underRegions = objectRegions(under, shown->regions().closeGap);
+    // The gaps A's lines under the parts close once the parts' lines are left out (a body's
+    // outline drawn with a gap an arm's top covered): each end on its line, to be closed in
+    // every in-between by a line of no ink, or the body's region opens into the part's as the
+    // part turns away.
+    std::vector<std::size_t> underIndex; // under's strokes → A's
+    for (std::size_t s = 0; s < a.strokes.size(); ++s)
+        if (std::none_of(fit.parts.begin(), fit.parts.end(),
+                         [s](const LayeredPart &p) { return p.stroke == s; }))
+            underIndex.push_back(s);
+    for (const geometry::GapClosure &c : fit.underRegions->regions().closures) {
+        const int from = fit.underRegions->strokeOfInput(c.fromStroke);
+        const int to = fit.underRegions->strokeOfInput(c.toStroke);
+        if (from < 0 || to < 0 || std::size_t(from) >= underIndex.size() ||
+            std::size_t(to) >= underIndex.size())
+            continue;
+        const std::size_t sf = underIndex[std::size_t(from)], st = underIndex[std::size_t(to)];
+        fit.underClosures.push_back({anchorOn(a, sf, c.from), anchorOn(a, st, c.to)});
+    }
     fit.underFills.assign(std::size_t(fit.underRegions->faceCount()), std::nullopt);
     // Each under face shows the fill of A's face its seed lies in, unless that is a part's
     // (the face under an arm's top): then the fill of A's largest face within it that no part
@@ -865,7 +931,8 @@ double fadeAt(double t, const BetweenOptions &options)
 // `carried` (rest's strokes moved, same order and ids) with Apply Pose's lines and fills:
 // `rest` posed by the carried points, its pose applied. Ids of the lines it adds follow the
 // largest of either.
-StrokeGroup appliedAsShown(const StrokeGroup &rest, StrokeGroup carried, double closeGap)
+// `rest` posed by the carried points (rest's strokes moved, same order).
+StrokeGroup posedBy(const StrokeGroup &rest, const StrokeGroup &carried)
 {
     StrokeGroup posed = rest;
     auto points = std::make_shared<DeformedStrokes>();
@@ -873,6 +940,12 @@ StrokeGroup appliedAsShown(const StrokeGroup &rest, StrokeGroup carried, double 
         points->strokes.push_back(stroke.data ? stroke.data->points : std::vector<StrokePoint>{});
     posed.deformed = std::move(points);
     posed.rig.pins = {Pin{kNoId, QPointF(), QPointF()}}; // posed: shown as deformed
+    return posed;
+}
+
+StrokeGroup appliedAsShown(const StrokeGroup &rest, StrokeGroup carried, double closeGap)
+{
+    const StrokeGroup posed = posedBy(rest, carried);
     Id next = std::max(largestId(rest), largestId(carried));
     AppliedPose applied = applyPoseToDrawing(posed, closeGap, [&next] { return ++next; });
     // Apply Pose's strokes are the posed points; the carried ones hold the faded ink.
@@ -992,6 +1065,16 @@ StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions
     StrokeGroup out = fit.a;
     carryStrokes(out, geometry::applyEmbedding(fit.meshed->embedding, Ut, F), 1.0 - w);
     if (!fit.parts.empty() && !out.fills.empty()) {
+        // A gap A's regions closed stays closed (a part's open end against the line under it
+        // may leave the Close gaps distance as the part turns), as Apply Pose keeps it.
+        Id next = std::max(largestId(fit.a), largestId(out));
+        for (Stroke &closer : keptGapClosers(posedBy(fit.a, out), out.strokes, fit.closeGap,
+                                             [&next] { return ++next; }))
+            out.strokes.push_back(std::move(closer));
+        const double width = medianInkWidth(fit.a.strokes);
+        for (const auto &[from, to] : fit.underClosures)
+            out.strokes.push_back(
+                Stroke{++next, lineOfNoInk({pointAt(out, from), pointAt(out, to)}, width)});
         out.fills = layeredFills(fit, out, Ut);
         return out;
     }

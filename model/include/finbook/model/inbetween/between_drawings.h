@@ -71,6 +71,12 @@ struct LayeredPart {
     std::optional<Fill> fill;
 };
 
+// A point on a line of A: its stroke (index), segment and the share along it.
+struct LineAnchor {
+    std::size_t stroke = 0, segment = 0;
+    double share = 0.0;
+};
+
 // The fit of A onto B and what the in-betweens need from it. Immutable.
 struct DrawingFit {
     StrokeGroup a, b; // the keys as shown (a posed key as its pose would be applied)
@@ -92,6 +98,9 @@ struct DrawingFit {
     Eigen::Index restTriangles = 0;
     ObjectRegionsPtr underRegions;
     std::vector<std::optional<Fill>> underFills;
+    // The gaps underRegions closes (a body's outline drawn with a gap that an arm's top
+    // covered), closed in every in-between by a line of no ink between the two ends as carried.
+    std::vector<std::array<LineAnchor, 2>> underClosures;
     // A's faces as shown and the fill each shows: a face on a part shows what A shows where the
     // part's carried mesh takes it back to (a stripe on a sleeve keeps its colour).
     ObjectRegionsPtr shownRegions;
