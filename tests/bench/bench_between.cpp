@@ -157,6 +157,20 @@ QImage cell(const Frame &frame, const QTransform &t, const DocumentSettings &set
     return image;
 }
 
+// The cells side by side, a grey line between each two.
+void saveSheet(const std::vector<QImage> &cells, const QString &path)
+{
+    QImage sheet(kCell * int(cells.size()), kCell, QImage::Format_RGB32);
+    QPainter painter(&sheet);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        painter.drawImage(int(i) * kCell, 0, cells[i]);
+        painter.setPen(QColor(200, 200, 200));
+        painter.drawLine(int(i) * kCell, 0, int(i) * kCell, kCell);
+    }
+    painter.end();
+    sheet.save(path);
+}
+
 struct Summary {
     std::vector<double> median, p95, limb, naive, ms, drawingMs, pinMs;
     int meets = 0, limbsMeet = 0, failed = 0, drawings = 0, fillsKept = 0;
@@ -380,15 +394,7 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
             f.groups.push_back(std::move(*in));
         cells.push_back(cell(f, t, doc.settings()));
     }
-    QImage sheet(kCell * int(cells.size()), kCell, QImage::Format_RGB32);
-    QPainter painter(&sheet);
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-        painter.drawImage(int(i) * kCell, 0, cells[i]);
-        painter.setPen(QColor(200, 200, 200));
-        painter.drawLine(int(i) * kCell, 0, int(i) * kCell, kCell);
-    }
-    painter.end();
-    sheet.save(QDir(pngDir).filePath(QStringLiteral("between_%1.png").arg(name)));
+    saveSheet(cells, QDir(pngDir).filePath(QStringLiteral("between_%1.png").arg(name)));
 }
 
 // Two keys drawn in the app (a .finbook file: its first and last frames, each object the two
@@ -452,15 +458,7 @@ void runKeys(const QString &file, const BetweenOptions &options, const QString &
         cell(fitted, t, loaded->settings, under.groups.empty() ? nullptr : &under.groups[0]));
     for (const Frame &f : mid)
         cells.push_back(cell(f, t, loaded->settings));
-    QImage sheet(kCell * int(cells.size()), kCell, QImage::Format_RGB32);
-    QPainter painter(&sheet);
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-        painter.drawImage(int(i) * kCell, 0, cells[i]);
-        painter.setPen(QColor(200, 200, 200));
-        painter.drawLine(int(i) * kCell, 0, int(i) * kCell, kCell);
-    }
-    painter.end();
-    sheet.save(QDir(pngDir).filePath(QStringLiteral("between_%1.png").arg(name)));
+    saveSheet(cells, QDir(pngDir).filePath(QStringLiteral("between_%1.png").arg(name)));
 }
 
 int benchBetween(const QStringList &args)

@@ -36,6 +36,17 @@ double segmentDistance2(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
     return (p - (a + s * d)).squaredNorm();
 }
 
+// At most kMaxPartSamples of a part's samples, evenly.
+void thinned(std::vector<int> &part)
+{
+    if (int(part.size()) <= kMaxPartSamples)
+        return;
+    std::vector<int> taken;
+    for (int i = 0; i < kMaxPartSamples; ++i)
+        taken.push_back(part[std::size_t(i) * part.size() / kMaxPartSamples]);
+    part.swap(taken);
+}
+
 bool skeletonUsable(const FitSkeleton &skeleton)
 {
     if (skeleton.parent.size() != skeleton.joints.size())
@@ -185,12 +196,7 @@ Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTa
         }
         if (int(part.size()) < kMinPartSamples)
             continue;
-        if (int(part.size()) > kMaxPartSamples) {
-            std::vector<int> taken;
-            for (int i = 0; i < kMaxPartSamples; ++i)
-                taken.push_back(part[std::size_t(i) * part.size() / kMaxPartSamples]);
-            part.swap(taken);
-        }
+        thinned(part);
         const Eigen::Vector2d pivot = skeleton.joints[std::size_t(p)];
         const auto cost = [&](double angle) {
             const Placement t = base.turned(angle, pivot);
@@ -286,12 +292,7 @@ Eigen::MatrixX2d turnHingedPieces(const RigidFitSource &source, const RigidFitTa
         std::vector<int> own = source.hingedSamples[h];
         if (int(own.size()) < kMinPartSamples || vertices.empty())
             continue;
-        if (int(own.size()) > kMaxPartSamples) {
-            std::vector<int> taken;
-            for (int i = 0; i < kMaxPartSamples; ++i)
-                taken.push_back(own[std::size_t(i) * own.size() / kMaxPartSamples]);
-            own.swap(taken);
-        }
+        thinned(own);
         // What the rest of A lies on already is not the piece's: B's points nearer than
         // kTakenShare of B's diagonal to a sample of A off the piece (an arm searched over the
         // body would otherwise lie on the body's lines as well as on its own).
