@@ -157,6 +157,19 @@ QImage cell(const Frame &frame, const QTransform &t, const DocumentSettings &set
     return image;
 }
 
+// A result row of `file`, and its printing (one JSON line, flushed).
+QJsonObject rowOf(const QString &file)
+{
+    return {{QStringLiteral("bench"), QStringLiteral("between")},
+            {QStringLiteral("file"), QFileInfo(file).fileName()}};
+}
+
+void printRow(const QJsonObject &row)
+{
+    std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
+    std::fflush(stdout);
+}
+
 // The cells side by side, a grey line between each two.
 void saveSheet(const std::vector<QImage> &cells, const QString &path)
 {
@@ -182,12 +195,8 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
             const BetweenOptions &options, const QString &pngDir, Summary &summary)
 {
     const QString name = QFileInfo(file).completeBaseName();
-    QJsonObject row{{QStringLiteral("bench"), QStringLiteral("between")},
-                    {QStringLiteral("file"), QFileInfo(file).fileName()}};
-    const auto print = [&row] {
-        std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
-        std::fflush(stdout);
-    };
+    QJsonObject row = rowOf(file);
+    const auto print = [&row] { printRow(row); };
     Document doc;
     const Id g = testing::drawingDocument(doc, lines);
     const double closeGap = doc.settings().closeGap;
@@ -404,12 +413,8 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
 void runKeys(const QString &file, const BetweenOptions &options, const QString &pngDir)
 {
     const QString name = QFileInfo(file).completeBaseName();
-    QJsonObject row{{QStringLiteral("bench"), QStringLiteral("between")},
-                    {QStringLiteral("file"), QFileInfo(file).fileName()}};
-    const auto print = [&row] {
-        std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
-        std::fflush(stdout);
-    };
+    QJsonObject row = rowOf(file);
+    const auto print = [&row] { printRow(row); };
     const auto loaded = loadFinbook(file);
     if (!loaded || loaded->frames.size() < 2) {
         row.insert(QStringLiteral("error"),
