@@ -1,4 +1,7 @@
 #include <finbook/deform/between/arap_interpolation.h>
+#include <finbook/geometry/mesh_quality.h>
+#include <finbook/geometry/polyline.h>
+#include <finbook/geometry/region.h>
 #include <finbook/geometry/triangle_locator.h>
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/fill/fill_resolve.h>
@@ -243,35 +246,40 @@ struct LayeredMesh {
     Eigen::Index restTriangles = 0;
 };
 
-bool insidePolygon(const Eigen::Vector2d &p, const std::vector<StrokePoint> &polygon)
+QRectF boundsOf(const std::vector<StrokePoint> &points)
 {
-    bool in = false;
-    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-        const double xi = polygon[i].x, yi = polygon[i].y, xj = polygon[j].x, yj = polygon[j].y;
-        if ((yi > p.y()) != (yj > p.y()) && p.x() < (xj - xi) * (p.y() - yi) / (yj - yi) + xi)
-            in = !in;
+    float left = points.front().x, right = left, top = points.front().y, bottom = top;
+    for (const StrokePoint &p : points) {
+        left = std::min(left, p.x);
+        right = std::max(right, p.x);
+        top = std::min(top, p.y);
+        bottom = std::max(bottom, p.y);
     }
-    return in;
+    return QRectF(QPointF(left, top), QPointF(right, bottom));
 }
 
-double polygonArea(const std::vector<StrokePoint> &polygon)
-{
-    double twice = 0.0;
-    for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
-        twice += double(polygon[j].x) * polygon[i].y - double(polygon[i].x) * polygon[j].y;
-    return 0.5 * std::abs(twice);
-}
-
-double meshArea(const geometry::ObjectMesh &mesh)
-{
+// A closed line as a region (geometry::regionContains: even-odd, so a line that crosses
+// itself is still read as drawn), with its box and area, made once per line.
+struct Outline {
+    geometry::Region region;
+    QRectF bounds;
     double area = 0.0;
-    for (Eigen::Index t = 0; t < mesh.F.rows(); ++t) {
-        const Eigen::Vector2d u = (mesh.V.row(mesh.F(t, 1)) - mesh.V.row(mesh.F(t, 0))).transpose();
-        const Eigen::Vector2d v = (mesh.V.row(mesh.F(t, 2)) - mesh.V.row(mesh.F(t, 0))).transpose();
-        area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
+
+    explicit Outline(const std::vector<StrokePoint> &points)
+    {
+        Eigen::MatrixX2d ring(Eigen::Index(points.size()), 2);
+        for (std::size_t k = 0; k < points.size(); ++k)
+            ring.row(Eigen::Index(k)) << points[k].x, points[k].y;
+        area = std::abs(geometry::signedArea(ring));
+        region = {geometry::Polygon{std::move(ring), {}}};
+        bounds = points.empty() ? QRectF() : boundsOf(points);
     }
-    return area;
-}
+    bool contains(const Eigen::Vector2d &p) const
+    {
+        return bounds.contains(QPointF(p.x(), p.y())) &&
+               geometry::regionContains(region, p.x(), p.y());
+    }
+};
 
 bool closedLine(const Stroke &s)
 {
@@ -285,28 +293,16 @@ bool closedLine(const Stroke &s)
     return ends <= std::max(kClosedEnds, kClosedShare * length);
 }
 
-QRectF boundsOf(const std::vector<StrokePoint> &points)
-{
-    float left = points.front().x, right = left, top = points.front().y, bottom = top;
-    for (const StrokePoint &p : points) {
-        left = std::min(left, p.x);
-        right = std::max(right, p.x);
-        top = std::min(top, p.y);
-        bottom = std::max(bottom, p.y);
-    }
-    return QRectF(QPointF(left, top), QPointF(right, bottom));
-}
-
 // The share of `a`'s points inside `b`'s outline (judged on at most kShareSamples of them,
 // evenly along a).
-double shareInside(const std::vector<StrokePoint> &a, const std::vector<StrokePoint> &b)
+double shareInside(const std::vector<StrokePoint> &a, const Outline &b)
 {
-    if (a.empty() || b.empty() || !boundsOf(a).intersects(boundsOf(b)))
+    if (a.empty() || !boundsOf(a).intersects(b.bounds))
         return 0.0;
     const std::size_t stride = std::max<std::size_t>(1, a.size() / kShareSamples);
     std::size_t in = 0, judged = 0;
     for (std::size_t k = 0; k < a.size(); k += stride, ++judged)
-        in += insidePolygon(Eigen::Vector2d(a[k].x, a[k].y), b);
+        in += b.contains(Eigen::Vector2d(a[k].x, a[k].y));
     return double(in) / double(judged);
 }
 
@@ -335,19 +331,21 @@ double distanceTo(const std::vector<StrokePoint> &line, const std::vector<Stroke
 // the middle of where the two overlap (its points inside the other's outline and the other's
 // inside its own). Nullopt when they do not overlap.
 std::optional<Eigen::Vector2d> pivotOf(const std::vector<StrokePoint> &part,
-                                       const std::vector<StrokePoint> &under)
+                                       const Outline &partOutline,
+                                       const std::vector<StrokePoint> &under,
+                                       const Outline &underOutline)
 {
     Eigen::Vector2d sum = Eigen::Vector2d::Zero(), centroid = Eigen::Vector2d::Zero();
     int count = 0;
     for (const StrokePoint &x : part) {
         centroid += Eigen::Vector2d(x.x, x.y);
-        if (insidePolygon(Eigen::Vector2d(x.x, x.y), under)) {
+        if (underOutline.contains(Eigen::Vector2d(x.x, x.y))) {
             sum += Eigen::Vector2d(x.x, x.y);
             ++count;
         }
     }
     for (const StrokePoint &x : under)
-        if (insidePolygon(Eigen::Vector2d(x.x, x.y), part)) {
+        if (partOutline.contains(Eigen::Vector2d(x.x, x.y))) {
             sum += Eigen::Vector2d(x.x, x.y);
             ++count;
         }
@@ -369,7 +367,7 @@ std::optional<Eigen::Vector2d> pivotOf(const std::vector<StrokePoint> &part,
         high = std::max(high, along);
     }
     const double length = high - low;
-    const double width = length > 0.0 ? polygonArea(part) / length : 0.0;
+    const double width = length > 0.0 ? partOutline.area / length : 0.0;
     if (!(length > kLimbLength * width))
         return overlap;
     // The end nearer the overlap lies over the other part.
@@ -383,11 +381,18 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
 {
     // Closed lines, largest first; each that overlaps a larger one lies over it.
     std::vector<std::size_t> closed;
-    for (std::size_t s = 0; s < a.strokes.size(); ++s)
-        if (closedLine(a.strokes[s]) && polygonArea(a.strokes[s].data->points) > 100.0)
+    std::map<std::size_t, Outline> outlines;
+    for (std::size_t s = 0; s < a.strokes.size(); ++s) {
+        if (!closedLine(a.strokes[s]))
+            continue;
+        Outline outline(a.strokes[s].data->points);
+        if (outline.area > 100.0) {
             closed.push_back(s);
+            outlines.emplace(s, std::move(outline));
+        }
+    }
     std::stable_sort(closed.begin(), closed.end(), [&](std::size_t x, std::size_t y) {
-        return polygonArea(a.strokes[x].data->points) > polygonArea(a.strokes[y].data->points);
+        return outlines.at(x).area > outlines.at(y).area;
     });
     closed.resize(std::min(closed.size(), kMaxParts));
     std::map<std::size_t, std::size_t> over; // part → the larger line it lies over
@@ -396,9 +401,9 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
         double most = 0.0;
         for (std::size_t j = 0; j < i; ++j) {
             const auto &under = a.strokes[closed[j]].data->points;
-            const double share = shareInside(part, under);
+            const double share = shareInside(part, outlines.at(closed[j]));
             if (share >= kOverlapLow && share <= kOverlapHigh && share > most &&
-                shareInside(under, part) > 0.0) {
+                shareInside(under, outlines.at(closed[i])) > 0.0) {
                 most = share;
                 over[closed[i]] = closed[j];
             }
@@ -434,10 +439,12 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
                      .adjusted(-reach, -reach, reach, reach)
                      .intersects(boundsOf(outline)))
                 continue;
-            if (shareInside(line, outline) >= kInsidePart && distanceTo(line, outline) > reach)
+            if (shareInside(line, outlines.at(part)) >= kInsidePart &&
+                distanceTo(line, outline) > reach)
                 held.push_back(s);
             else
-                touched = distanceTo(line, outline) <= reach || shareInside(line, outline) > 0.0;
+                touched = distanceTo(line, outline) <= reach ||
+                          shareInside(line, outlines.at(part)) > 0.0;
         }
         if (touched) {
             it = over.erase(it);
@@ -445,8 +452,7 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
         }
         for (const std::size_t s : held) {
             const auto same = inPart.find(s);
-            if (same == inPart.end() ||
-                polygonArea(outline) < polygonArea(a.strokes[same->second].data->points))
+            if (same == inPart.end() || outlines.at(part).area < outlines.at(same->second).area)
                 inPart[s] = part;
         }
         ++it;
@@ -487,14 +493,16 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
                          [&](std::size_t s) { return inked(a.strokes[s]); }))
             return std::nullopt;
         if (!meshes.empty() && restArea > 0.0)
-            key.density = std::clamp(
-                key.density * std::sqrt(polygonArea(a.strokes[strokes[0]].data->points) / restArea),
-                0.05, key.density);
+            key.density =
+                std::clamp(key.density * std::sqrt(outlines.at(strokes[0]).area / restArea), 0.05,
+                           key.density);
         auto meshed = meshObject(key);
         if (!meshed)
             return std::nullopt;
         if (meshes.empty())
-            restArea = meshArea((*meshed)->mesh);
+            restArea = geometry::triangleSignedAreas((*meshed)->mesh.V, (*meshed)->mesh.F)
+                           .cwiseAbs()
+                           .sum();
         meshes.push_back(*meshed);
     }
     // Stacked: vertices and triangles mesh after mesh; every A point (stroke after stroke)
@@ -540,7 +548,8 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
     LayeredMesh layered;
     for (const auto &[part, under] : over) {
         const std::optional<Eigen::Vector2d> pivot =
-            pivotOf(a.strokes[part].data->points, a.strokes[under].data->points);
+            pivotOf(a.strokes[part].data->points, outlines.at(part), a.strokes[under].data->points,
+                    outlines.at(under));
         if (!pivot)
             continue;
         const Eigen::RowVector2d centre = pivot->transpose();
@@ -619,6 +628,9 @@ void layerFills(DrawingFit &fit)
         return a.fills[std::size_t(shownFills[std::size_t(face)])];
     };
     // A part shows the fill most of its triangles show (those under no part drawn after it).
+    std::map<std::size_t, Outline> outlines; // each part's, at rest
+    for (const LayeredPart &part : fit.parts)
+        outlines.emplace(part.stroke, Outline(a.strokes[part.stroke].data->points));
     const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
     const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
     for (LayeredPart &part : fit.parts) {
@@ -628,8 +640,7 @@ void layerFills(DrawingFit &fit)
                 (V.row(F(t, 0)) + V.row(F(t, 1)) + V.row(F(t, 2))).transpose() / 3.0;
             // Under a part drawn after it, it does not show.
             if (std::any_of(fit.parts.begin(), fit.parts.end(), [&](const LayeredPart &other) {
-                    return other.stroke > part.stroke &&
-                           insidePolygon(c, a.strokes[other.stroke].data->points);
+                    return other.stroke > part.stroke && outlines.at(other.stroke).contains(c);
                 }))
                 continue;
             const int face = shown->faceAt(QPointF(c.x(), c.y()));
@@ -675,9 +686,8 @@ void layerFills(DrawingFit &fit)
     // (the face under an arm's top): then the fill of A's largest face within it that no part
     // covers.
     const auto partAt = [&](const Eigen::Vector2d &p) {
-        return std::any_of(fit.parts.begin(), fit.parts.end(), [&](const LayeredPart &part) {
-            return insidePolygon(p, a.strokes[part.stroke].data->points);
-        });
+        return std::any_of(outlines.begin(), outlines.end(),
+                           [&](const auto &outline) { return outline.second.contains(p); });
     };
     const geometry::Regions &shownFaces = shown->regions();
     for (int face = 0; face < fit.underRegions->faceCount(); ++face) {
@@ -1006,12 +1016,16 @@ std::vector<Fill> layeredFills(const DrawingFit &fit, const StrokeGroup &carried
     const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
     const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
     const geometry::TriangleLocator rest(Ut, F.topRows(fit.restTriangles));
+    std::vector<Outline> outlines; // each part's as carried, topmost first
+    for (const LayeredPart &part : fit.parts)
+        outlines.emplace_back(carried.strokes[part.stroke].data->points);
     for (int face = 0; face < regions->faceCount(); ++face) {
         const Eigen::Vector2d seed = regions->regions().faces[std::size_t(face)].seed;
         std::optional<Fill> shows;
         bool onPart = false;
-        for (const LayeredPart &part : fit.parts) { // topmost first
-            if (!insidePolygon(seed, carried.strokes[part.stroke].data->points))
+        for (std::size_t k = 0; k < fit.parts.size(); ++k) { // topmost first
+            const LayeredPart &part = fit.parts[k];
+            if (!outlines[k].contains(seed))
                 continue;
             onPart = true;
             // What A shows where the part's carried mesh takes the seed back to (a stripe on a
