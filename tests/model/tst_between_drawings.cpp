@@ -571,6 +571,24 @@ void TestBetweenDrawings::anArmDrawnOverTheBodyTurnsAsAPiece()
                 QStringLiteral("a fill at (%1, %2) on no part").arg(f.seed.x()).arg(f.seed.y())));
     const std::optional<QRgb> body = colourAt(centre);
     QVERIFY(body);
+    // At t = 0 every region shows what it shows in A.
+    {
+        const StrokeGroup start = betweenDrawing(fit, 0.0, noFade);
+        const ObjectRegionsPtr now = objectRegions(start, closeGap),
+                               then = objectRegions(a, closeGap);
+        const std::vector<int> nowShows = faceFills(*now, start.fills),
+                               thenShows = faceFills(*then, a.fills);
+        for (int face = 0; face < now->faceCount(); ++face) {
+            const Eigen::Vector2d seed = now->regions().faces[std::size_t(face)].seed;
+            const int inA = then->faceAt(QPointF(seed.x(), seed.y()));
+            QVERIFY(inA >= 0);
+            const int x = nowShows[std::size_t(face)], y = thenShows[std::size_t(inA)];
+            QVERIFY2(
+                (x < 0) == (y < 0) &&
+                    (x < 0 || start.fills[std::size_t(x)].color == a.fills[std::size_t(y)].color),
+                qPrintable(QStringLiteral("the region at (%1, %2)").arg(seed.x()).arg(seed.y())));
+        }
+    }
     QPointF top; // the middle of A's arm's points inside the body
     int inside = 0;
     const QPolygonF bodyLine = line(a, 0);
