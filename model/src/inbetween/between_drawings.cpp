@@ -412,7 +412,9 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
     // The other lines: one inside a part (a stripe on a sleeve) goes with it (with the smallest
     // part holding it); a part that another line touches or crosses (hair on a head, a hand
     // drawn at an arm's end, a line across the shoulder) is not a part on its own, since which
-    // of the two that line goes with is not known.
+    // of the two that line goes with is not known. (Letting a line that touches a part and not
+    // the line under it go with the part kept a bird's beak with its head, but a sheep's hair
+    // tufts, bounded by the head's outline and each other, lost their fills.)
     std::map<std::size_t, std::size_t> inPart; // line → the part it lies in
     for (auto it = over.begin(); it != over.end();) {
         const auto &[part, under] = *it;
@@ -440,11 +442,12 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
                      .intersects(boundsOf(outline)))
                 continue;
             if (shareInside(line, outlines.at(part)) >= kInsidePart &&
-                distanceTo(line, outline) > reach)
+                distanceTo(line, outline) > reach) {
                 held.push_back(s);
-            else
-                touched = distanceTo(line, outline) <= reach ||
-                          shareInside(line, outlines.at(part)) > 0.0;
+                continue;
+            }
+            touched =
+                distanceTo(line, outline) <= reach || shareInside(line, outlines.at(part)) > 0.0;
         }
         if (touched) {
             it = over.erase(it);
@@ -1016,35 +1019,28 @@ std::vector<Fill> layeredFills(const DrawingFit &fit, const StrokeGroup &carried
     const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
     const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
     const geometry::TriangleLocator rest(Ut, F.topRows(fit.restTriangles));
-    std::vector<Outline> outlines; // each part's as carried, topmost first
+    std::vector<geometry::TriangleLocator> meshes; // each part's as carried, topmost first
     for (const LayeredPart &part : fit.parts)
-        outlines.emplace_back(carried.strokes[part.stroke].data->points);
+        meshes.emplace_back(Ut, F.middleRows(part.firstTriangle, part.triangles));
     for (int face = 0; face < regions->faceCount(); ++face) {
         const Eigen::Vector2d seed = regions->regions().faces[std::size_t(face)].seed;
         std::optional<Fill> shows;
         bool onPart = false;
-        for (std::size_t k = 0; k < fit.parts.size(); ++k) { // topmost first
+        // On the topmost part whose carried mesh holds it (its outline, and the lines that
+        // went with it: a beak on a head), what A shows where that mesh takes it back to (a
+        // stripe on a sleeve keeps its colour).
+        for (std::size_t k = 0; k < fit.parts.size() && !onPart; ++k) {
             const LayeredPart &part = fit.parts[k];
-            if (!outlines[k].contains(seed))
+            const geometry::Location at = meshes[k].locate(seed);
+            if (!at.inside || at.triangle < 0)
                 continue;
             onPart = true;
-            // What A shows where the part's carried mesh takes the seed back to (a stripe on a
-            // sleeve keeps its colour), else what the part shows.
-            shows = part.fill;
-            const geometry::TriangleLocator mine(Ut,
-                                                 F.middleRows(part.firstTriangle, part.triangles));
-            const geometry::Location at = mine.locate(seed);
-            if (at.inside && at.triangle >= 0) {
-                const Eigen::Index t = part.firstTriangle + at.triangle;
-                const Eigen::Vector3d &w = at.weights;
-                const Eigen::Vector2d back =
-                    (w(0) * V.row(F(t, 0)) + w(1) * V.row(F(t, 1)) + w(2) * V.row(F(t, 2)))
-                        .transpose();
-                const int inA = fit.shownRegions->faceAt(QPointF(back.x(), back.y()));
-                if (inA >= 0)
-                    shows = fit.shownFills[std::size_t(inA)];
-            }
-            break;
+            const Eigen::Index t = part.firstTriangle + at.triangle;
+            const Eigen::Vector3d &w = at.weights;
+            const Eigen::Vector2d back =
+                (w(0) * V.row(F(t, 0)) + w(1) * V.row(F(t, 1)) + w(2) * V.row(F(t, 2))).transpose();
+            const int inA = fit.shownRegions->faceAt(QPointF(back.x(), back.y()));
+            shows = inA >= 0 ? fit.shownFills[std::size_t(inA)] : part.fill;
         }
         if (!onPart && fit.underRegions) {
             const geometry::Location at = rest.locate(seed);
