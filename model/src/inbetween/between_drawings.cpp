@@ -3,6 +3,7 @@
 #include <finbook/geometry/polyline.h>
 #include <finbook/geometry/region.h>
 #include <finbook/geometry/triangle_locator.h>
+#include <finbook/model/erase/stroke_cut.h>
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/inbetween/between_drawings.h>
@@ -154,19 +155,28 @@ QString failure(const deform::between::RigidFitResult &r)
 // Points embedded in A's mesh posed as V (rows of meshed's V): with parts drawn over others,
 // each in the topmost part whose triangles hold it (a click on an arm's top over the body means
 // the arm), else in the rest's, else on the nearest triangle as geometry::embed puts it.
-geometry::Embedding embedOnTop(const DrawingFit &fit, const Eigen::MatrixX2d &V,
-                               const Eigen::MatrixX2d &points)
+// Point location in each of A's meshes posed as V: each part's (topmost first), then the rest's;
+// each with the row of F its triangles start at.
+std::vector<std::pair<Eigen::Index, geometry::TriangleLocator>>
+layerLocators(const DrawingFit &fit, const Eigen::MatrixX2d &V)
 {
     const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
-    geometry::Embedding out = geometry::embed(V, F, points);
-    if (fit.parts.empty())
-        return out;
     std::vector<std::pair<Eigen::Index, geometry::TriangleLocator>> layers;
     for (const LayeredPart &part : fit.parts)
         layers.emplace_back(
             part.firstTriangle,
             geometry::TriangleLocator(V, F.middleRows(part.firstTriangle, part.triangles)));
     layers.emplace_back(0, geometry::TriangleLocator(V, F.topRows(fit.restTriangles)));
+    return layers;
+}
+
+geometry::Embedding embedOnTop(const DrawingFit &fit, const Eigen::MatrixX2d &V,
+                               const Eigen::MatrixX2d &points)
+{
+    geometry::Embedding out = geometry::embed(V, fit.meshed->mesh.F, points);
+    if (fit.parts.empty())
+        return out;
+    const auto layers = layerLocators(fit, V);
     for (Eigen::Index i = 0; i < points.rows(); ++i) {
         const Eigen::Vector2d p = points.row(i).transpose();
         if (!p.allFinite())
@@ -306,6 +316,14 @@ double shareInside(const std::vector<StrokePoint> &a, const Outline &b)
     return double(in) / double(judged);
 }
 
+// The share along segment a→b of the point nearest x (0 for a segment of no length).
+double nearestShare(const Eigen::Vector2d &x, const Eigen::Vector2d &a, const Eigen::Vector2d &b)
+{
+    const Eigen::Vector2d d = b - a;
+    const double length = d.squaredNorm();
+    return length > 0.0 ? std::clamp((x - a).dot(d) / length, 0.0, 1.0) : 0.0;
+}
+
 // The smallest distance from `line`'s points (at most kShareSamples of them) to the outline
 // `ring` (its segments, closed).
 double distanceTo(const std::vector<StrokePoint> &line, const std::vector<StrokePoint> &ring)
@@ -316,10 +334,7 @@ double distanceTo(const std::vector<StrokePoint> &line, const std::vector<Stroke
         const Eigen::Vector2d x(line[k].x, line[k].y);
         for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
             const Eigen::Vector2d p(ring[j].x, ring[j].y), q(ring[i].x, ring[i].y);
-            const Eigen::Vector2d d = q - p;
-            const double length = d.squaredNorm();
-            const double t = length > 0.0 ? std::clamp((x - p).dot(d) / length, 0.0, 1.0) : 0.0;
-            nearest = std::min(nearest, (x - (p + t * d)).norm());
+            nearest = std::min(nearest, (x - (p + nearestShare(x, p, q) * (q - p))).norm());
         }
     }
     return nearest;
@@ -441,13 +456,12 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
                      .adjusted(-reach, -reach, reach, reach)
                      .intersects(boundsOf(outline)))
                 continue;
-            if (shareInside(line, outlines.at(part)) >= kInsidePart &&
-                distanceTo(line, outline) > reach) {
+            const double inside = shareInside(line, outlines.at(part));
+            const bool near = distanceTo(line, outline) <= reach;
+            if (inside >= kInsidePart && !near)
                 held.push_back(s);
-                continue;
-            }
-            touched =
-                distanceTo(line, outline) <= reach || shareInside(line, outlines.at(part)) > 0.0;
+            else
+                touched = near || inside > 0.0;
         }
         if (touched) {
             it = over.erase(it);
@@ -577,36 +591,22 @@ std::optional<LayeredMesh> layeredMesh(const StrokeGroup &a, double closeGap)
     return layered;
 }
 
-// The point of stroke s of g nearest p: its segment and the share along it.
+// The point of stroke s of g nearest p.
 LineAnchor anchorOn(const StrokeGroup &g, std::size_t s, const Eigen::Vector2d &p)
 {
-    LineAnchor best{s, 0, 0.0};
+    LineAnchor best{s, {}};
     const std::vector<StrokePoint> &points = g.strokes[s].data->points;
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k + 1 < points.size(); ++k) {
         const Eigen::Vector2d a(points[k].x, points[k].y), b(points[k + 1].x, points[k + 1].y);
-        const Eigen::Vector2d d = b - a;
-        const double length = d.squaredNorm();
-        const double t = length > 0.0 ? std::clamp((p - a).dot(d) / length, 0.0, 1.0) : 0.0;
-        const double distance = (p - (a + t * d)).norm();
+        const double t = nearestShare(p, a, b);
+        const double distance = (p - (a + t * (b - a))).norm();
         if (distance < nearest) {
             nearest = distance;
-            best = LineAnchor{s, k, t};
+            best.place = geometry::PolylinePlace{Eigen::Index(k), t};
         }
     }
     return best;
-}
-
-// Where an anchor lies on g's strokes (the same strokes, moved).
-QPointF pointAt(const StrokeGroup &g, const LineAnchor &at)
-{
-    const std::vector<StrokePoint> &points = g.strokes[at.stroke].data->points;
-    if (points.empty())
-        return {};
-    const std::size_t k = std::min(at.segment, points.size() - 1);
-    const std::size_t next = std::min(k + 1, points.size() - 1);
-    return QPointF((1.0 - at.share) * points[k].x + at.share * points[next].x,
-                   (1.0 - at.share) * points[k].y + at.share * points[next].y);
 }
 
 // What each of A's parts drawn over others shows (DrawingFit::parts), and what A shows under
@@ -659,10 +659,13 @@ void layerFills(DrawingFit &fit)
     // Under the parts: A without their lines.
     StrokeGroup under = a;
     under.strokes.clear();
+    std::vector<std::size_t> underIndex; // under's strokes → A's
     for (std::size_t s = 0; s < a.strokes.size(); ++s)
         if (std::none_of(fit.parts.begin(), fit.parts.end(),
-                         [s](const LayeredPart &p) { return p.stroke == s; }))
+                         [s](const LayeredPart &p) { return p.stroke == s; })) {
             under.strokes.push_back(a.strokes[s]);
+            underIndex.push_back(s);
+        }
     // The gap A's regions closed (the automatic one follows the drawing's size, which the
     // parts' lines are part of).
     fit.underRegions = objectRegions(under, shown->regions().closeGap);
@@ -670,11 +673,6 @@ void layerFills(DrawingFit &fit)
     // outline drawn with a gap an arm's top covered): each end on its line, to be closed in
     // every in-between by a line of no ink, or the body's region opens into the part's as the
     // part turns away.
-    std::vector<std::size_t> underIndex; // under's strokes → A's
-    for (std::size_t s = 0; s < a.strokes.size(); ++s)
-        if (std::none_of(fit.parts.begin(), fit.parts.end(),
-                         [s](const LayeredPart &p) { return p.stroke == s; }))
-            underIndex.push_back(s);
     for (const geometry::GapClosure &c : fit.underRegions->regions().closures) {
         const int from = fit.underRegions->strokeOfInput(c.fromStroke);
         const int to = fit.underRegions->strokeOfInput(c.toStroke);
@@ -941,9 +939,6 @@ double fadeAt(double t, const BetweenOptions &options)
     return fade > 0.0 && t > 1.0 - fade ? (t - (1.0 - fade)) / fade : 0.0;
 }
 
-// `carried` (rest's strokes moved, same order and ids) with Apply Pose's lines and fills:
-// `rest` posed by the carried points, its pose applied. Ids of the lines it adds follow the
-// largest of either.
 // `rest` posed by the carried points (rest's strokes moved, same order).
 StrokeGroup posedBy(const StrokeGroup &rest, const StrokeGroup &carried)
 {
@@ -956,6 +951,9 @@ StrokeGroup posedBy(const StrokeGroup &rest, const StrokeGroup &carried)
     return posed;
 }
 
+// `carried` (rest's strokes moved, same order and ids) with Apply Pose's lines and fills:
+// `rest` posed by the carried points, its pose applied. Ids of the lines it adds follow the
+// largest of either.
 StrokeGroup appliedAsShown(const StrokeGroup &rest, StrokeGroup carried, double closeGap)
 {
     const StrokeGroup posed = posedBy(rest, carried);
@@ -1003,14 +1001,21 @@ void carryStrokes(StrokeGroup &group, const Eigen::MatrixX2d &points, double kee
     }
 }
 
-} // namespace
-
-namespace {
+// Where a point the carried mesh U holds (`at`, in triangles from row `first` of F) lies at
+// rest (F's rows of V).
+Eigen::Vector2d atRest(const geometry::Location &at, Eigen::Index first, const Eigen::MatrixX2d &V,
+                       const Eigen::MatrixX3i &F)
+{
+    const Eigen::Index t = first + at.triangle;
+    return (at.weights(0) * V.row(F(t, 0)) + at.weights(1) * V.row(F(t, 1)) +
+            at.weights(2) * V.row(F(t, 2)))
+        .transpose();
+}
 
 // The fills of an in-between of a fit with parts drawn over others (DrawingFit::parts): the
-// carried lines' faces, each showing the fill of the topmost part whose carried outline holds
-// its seed, else what A shows under the parts where the rest's carried mesh takes the seed
-// back to, else none (the space an arm swung out of, between it and the body).
+// carried lines' faces, each showing what A shows where the topmost part's carried mesh that
+// holds its seed takes it back to, else what A shows under the parts where the rest's carried
+// mesh does, else none (the space an arm swung out of, between it and the body).
 std::vector<Fill> layeredFills(const DrawingFit &fit, const StrokeGroup &carried,
                                const Eigen::MatrixX2d &Ut)
 {
@@ -1018,10 +1023,8 @@ std::vector<Fill> layeredFills(const DrawingFit &fit, const StrokeGroup &carried
     const ObjectRegionsPtr regions = objectRegions(carried, fit.closeGap);
     const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
     const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
-    const geometry::TriangleLocator rest(Ut, F.topRows(fit.restTriangles));
-    std::vector<geometry::TriangleLocator> meshes; // each part's as carried, topmost first
-    for (const LayeredPart &part : fit.parts)
-        meshes.emplace_back(Ut, F.middleRows(part.firstTriangle, part.triangles));
+    const auto layers = layerLocators(fit, Ut); // the parts' as carried, then the rest's
+    const geometry::TriangleLocator &rest = layers.back().second;
     for (int face = 0; face < regions->faceCount(); ++face) {
         const Eigen::Vector2d seed = regions->regions().faces[std::size_t(face)].seed;
         std::optional<Fill> shows;
@@ -1031,25 +1034,18 @@ std::vector<Fill> layeredFills(const DrawingFit &fit, const StrokeGroup &carried
         // stripe on a sleeve keeps its colour).
         for (std::size_t k = 0; k < fit.parts.size() && !onPart; ++k) {
             const LayeredPart &part = fit.parts[k];
-            const geometry::Location at = meshes[k].locate(seed);
+            const geometry::Location at = layers[k].second.locate(seed);
             if (!at.inside || at.triangle < 0)
                 continue;
             onPart = true;
-            const Eigen::Index t = part.firstTriangle + at.triangle;
-            const Eigen::Vector3d &w = at.weights;
-            const Eigen::Vector2d back =
-                (w(0) * V.row(F(t, 0)) + w(1) * V.row(F(t, 1)) + w(2) * V.row(F(t, 2))).transpose();
+            const Eigen::Vector2d back = atRest(at, part.firstTriangle, V, F);
             const int inA = fit.shownRegions->faceAt(QPointF(back.x(), back.y()));
             shows = inA >= 0 ? fit.shownFills[std::size_t(inA)] : part.fill;
         }
         if (!onPart && fit.underRegions) {
             const geometry::Location at = rest.locate(seed);
             if (at.inside && at.triangle >= 0) {
-                const Eigen::Vector3d &w = at.weights;
-                const Eigen::Vector2d back =
-                    (w(0) * V.row(F(at.triangle, 0)) + w(1) * V.row(F(at.triangle, 1)) +
-                     w(2) * V.row(F(at.triangle, 2)))
-                        .transpose();
+                const Eigen::Vector2d back = atRest(at, 0, V, F);
                 const int under = fit.underRegions->faceAt(QPointF(back.x(), back.y()));
                 if (under >= 0)
                     shows = fit.underFills[std::size_t(under)];
@@ -1082,9 +1078,13 @@ StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions
                                              [&next] { return ++next; }))
             out.strokes.push_back(std::move(closer));
         const double width = medianInkWidth(fit.a.strokes);
+        const auto carriedTo = [&out](const LineAnchor &at) {
+            const StrokePoint p = pointAlong(out.strokes[at.stroke].data->points, at.place);
+            return QPointF(p.x, p.y);
+        };
         for (const auto &[from, to] : fit.underClosures)
             out.strokes.push_back(
-                Stroke{++next, lineOfNoInk({pointAt(out, from), pointAt(out, to)}, width)});
+                Stroke{++next, lineOfNoInk({carriedTo(from), carriedTo(to)}, width)});
         out.fills = layeredFills(fit, out, Ut);
         return out;
     }

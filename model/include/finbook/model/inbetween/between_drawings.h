@@ -13,6 +13,7 @@
 #pragma once
 
 #include <finbook/deform/between/rigid_fit.h>
+#include <finbook/geometry/erase/polyline_erase.h>
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/inbetween/inbetween_plan.h>
@@ -71,10 +72,10 @@ struct LayeredPart {
     std::optional<Fill> fill;
 };
 
-// A point on a line of A: its stroke (index), segment and the share along it.
+// A point on a line of A: its stroke (index) and its place along the stroke's points.
 struct LineAnchor {
-    std::size_t stroke = 0, segment = 0;
-    double share = 0.0;
+    std::size_t stroke = 0;
+    geometry::PolylinePlace place;
 };
 
 // The fit of A onto B and what the in-betweens need from it. Immutable.
