@@ -47,6 +47,40 @@ void thinned(std::vector<int> &part)
     part.swap(taken);
 }
 
+// Rigid ICP of some of A's samples alone: `points` (k×2) with their unit normals, placed by
+// `start`, each paired with the nearest agreeing B point within `cap`, until the placement
+// moves less than 1e-3 of B's diagonal (at most kBodyIterations steps, and none with fewer
+// than kMinPartSamples pairs). Returns the placement.
+Similarity rigidIcpOf(const Eigen::MatrixX2d &points, const Eigen::MatrixX2d &normals,
+                      Similarity start, const RigidFitTarget &target,
+                      const RigidFitOptions &options, double cap)
+{
+    Similarity current = start;
+    for (int iteration = 0; iteration < kBodyIterations; ++iteration) {
+        Eigen::MatrixX2d to(points.rows(), 2);
+        Eigen::VectorXd w = Eigen::VectorXd::Zero(points.rows());
+        for (Eigen::Index i = 0; i < points.rows(); ++i) {
+            const Eigen::Vector2d x =
+                current.linear * points.row(i).transpose() + current.translation;
+            Eigen::Vector2d n = current.linear * normals.row(i).transpose();
+            n = n.norm() > 0.0 ? Eigen::Vector2d(n.normalized()) : Eigen::Vector2d::Zero();
+            double d = 0.0;
+            const int row = target.grid.nearest(x, n, options.normalAgreement, d, cap);
+            to.row(i) = row >= 0 ? Eigen::RowVector2d(target.P.row(row)) : points.row(i);
+            w(i) = row >= 0 && d <= cap ? 1.0 : 0.0;
+        }
+        if (w.sum() < kMinPartSamples)
+            break;
+        const Similarity next = procrustes(points, to, w, false);
+        const double moved = (next.linear - current.linear).norm() * target.diagonal +
+                             (next.translation - current.translation).norm();
+        current = next;
+        if (moved < 1e-3 * target.diagonal)
+            break;
+    }
+    return current;
+}
+
 bool skeletonUsable(const FitSkeleton &skeleton)
 {
     if (skeleton.parent.size() != skeleton.joints.size())
@@ -139,34 +173,12 @@ Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTa
             if (sampleBone[std::size_t(s)] == body)
                 own.push_back(s);
         if (int(own.size()) >= kMinPartSamples && style == ArticulatedStart::BodyFirst) {
-            Eigen::MatrixX2d rest(Eigen::Index(own.size()), 2);
-            for (std::size_t i = 0; i < own.size(); ++i)
+            Eigen::MatrixX2d rest(Eigen::Index(own.size()), 2), normals(rest.rows(), 2);
+            for (std::size_t i = 0; i < own.size(); ++i) {
                 rest.row(Eigen::Index(i)) = source.rest.row(own[i]);
-            Similarity current = global;
-            for (int iteration = 0; iteration < kBodyIterations; ++iteration) {
-                Eigen::MatrixX2d from(rest.rows(), 2), to(rest.rows(), 2);
-                Eigen::VectorXd w = Eigen::VectorXd::Zero(rest.rows());
-                for (Eigen::Index i = 0; i < rest.rows(); ++i) {
-                    const Eigen::Vector2d x =
-                        current.linear * rest.row(i).transpose() + current.translation;
-                    Eigen::Vector2d n =
-                        current.linear * source.N.row(own[std::size_t(i)]).transpose();
-                    n = n.norm() > 0.0 ? Eigen::Vector2d(n.normalized()) : Eigen::Vector2d::Zero();
-                    double d = 0.0;
-                    const int row = target.grid.nearest(x, n, options.normalAgreement, d, cap);
-                    from.row(i) = rest.row(i);
-                    to.row(i) = row >= 0 ? Eigen::RowVector2d(target.P.row(row)) : from.row(i);
-                    w(i) = row >= 0 && d <= cap ? 1.0 : 0.0;
-                }
-                if (w.sum() < kMinPartSamples)
-                    break;
-                const Similarity next = procrustes(from, to, w, false);
-                const double moved = (next.linear - current.linear).norm() * target.diagonal +
-                                     (next.translation - current.translation).norm();
-                current = next;
-                if (moved < 1e-3 * target.diagonal)
-                    break;
+                normals.row(Eigen::Index(i)) = source.N.row(own[i]);
             }
+            Similarity current = rigidIcpOf(rest, normals, global, target, options, cap);
             if (options.allowScale) // keep the whole-drawing scale; the body sets the turn
                 current.linear *= std::sqrt(std::abs(global.linear.determinant()));
             root.linear = current.linear;
@@ -260,30 +272,14 @@ Eigen::MatrixX2d turnHingedPieces(const RigidFitSource &source, const RigidFitTa
         if (int(off.size()) >= kMinPartSamples) {
             const Eigen::Matrix2d turn =
                 procrustes(source.V, U, Eigen::VectorXd::Ones(U.rows()), false).linear;
-            for (int iteration = 0; iteration < kBodyIterations; ++iteration) {
-                const Eigen::MatrixX2d X = samplePositions(source, U);
-                Eigen::MatrixX2d from(Eigen::Index(off.size()), 2), to(from.rows(), 2);
-                Eigen::VectorXd w = Eigen::VectorXd::Zero(from.rows());
-                for (std::size_t i = 0; i < off.size(); ++i) {
-                    const Eigen::Vector2d x = X.row(off[i]).transpose();
-                    Eigen::Vector2d n = turn * source.N.row(off[i]).transpose();
-                    n = n.norm() > 0.0 ? Eigen::Vector2d(n.normalized()) : Eigen::Vector2d::Zero();
-                    double d = 0.0;
-                    const int row = target.grid.nearest(x, n, options.normalAgreement, d, cap);
-                    from.row(Eigen::Index(i)) = x.transpose();
-                    to.row(Eigen::Index(i)) =
-                        row >= 0 ? Eigen::RowVector2d(target.P.row(row)) : x.transpose();
-                    w(Eigen::Index(i)) = row >= 0 ? 1.0 : 0.0;
-                }
-                if (w.sum() < kMinPartSamples)
-                    break;
-                const Similarity step = procrustes(from, to, w, false);
-                U = step.apply(U);
-                if ((step.linear - Eigen::Matrix2d::Identity()).norm() * target.diagonal +
-                        step.translation.norm() <
-                    1e-3 * target.diagonal)
-                    break;
+            const Eigen::MatrixX2d X = samplePositions(source, U);
+            Eigen::MatrixX2d points(Eigen::Index(off.size()), 2), normals(points.rows(), 2);
+            for (std::size_t i = 0; i < off.size(); ++i) {
+                points.row(Eigen::Index(i)) = X.row(off[i]);
+                normals.row(Eigen::Index(i)) =
+                    (turn * source.N.row(off[i]).transpose()).transpose();
             }
+            U = rigidIcpOf(points, normals, Similarity{}, target, options, cap).apply(U);
         }
     }
     for (std::size_t h = 0; h < source.hinges.size(); ++h) {
