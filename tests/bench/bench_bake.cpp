@@ -1,28 +1,28 @@
-// finbook-bench bake [--png DIR] [--rig NAME] FILE...: what you see is what you keep. For each
-// drawing (Quick, Draw! "strokes" or a shape's "contours", shared/data/README.md; pen 3 px): Fill
-// All, each fill then recoloured apart (so a fill that moves to another region shows), then for
-// each rig kind and skinning (pins: the arap --quality bend, the right end turned 60° round the
-// held left end; cage: Fit Cage with two opposite corners moved out; skeleton: the automatic one,
-// every limb turned ±60° at its base, in each skinning) pose it, render the posed object as the
-// app draws it, Apply Pose to Drawing, render again. One JSON object per drawing and rig:
-// agree_pct (the share of the drawing's pixels whose colour agrees, each channel within
-// 8/255; a pixel on a colour edge in both pictures, the anti-aliased rim, is left out),
-// filled_px before and after (fills alone), fills before and after, how many fills own a face
-// of the regions (fills_shown: a fill may own only faces that show nothing, a zero-area face or
-// one under another fill), and how many show on the picture (fills_visible: each fill has a
-// colour of its own; more than 12 px of it), and the filled area as the picture shows it
-// (shown_filled_px before and after, shown_filled_change_pct: the fills' colours, so no fill
-// under ink).
-// A last line per rig kind sums up: bake_agree_pct_min and bake_agree_pct_median, the worst
-// drawing, the largest filled-area change (fills alone, and as shown), how many drawings
-// changed their fill count (faces owned: shown_fill_count_changed; on the picture:
-// visible_fill_count_changed), how many meet all three targets (meets_all_targets: agreement
-// ≥ 99.5 %, filled area within 0.5 %, the same fills on the picture), and Apply Pose's own
-// time (apply_ms per drawing; median and max, on the UI thread in the app).
+// finbook-bench bake [--png DIR [--faces]] [--rig NAME] FILE...: what you see is what you
+// keep. For each drawing (Quick, Draw! "strokes" or a shape's "contours", shared/data/README.md;
+// pen 3 px): Fill All, each fill then recoloured apart (so a fill that moves to another region
+// shows), then for each rig kind and skinning (pins: the arap --quality bend, the right end turned
+// 60° round the held left end; cage: Fit Cage with two opposite corners moved out; skeleton: the
+// automatic one, every limb turned ±60° at its base, in each skinning) pose it, render the posed
+// object as the app draws it, Apply Pose to Drawing, render again. One JSON object per drawing and
+// rig: agree_pct (the share of the drawing's pixels whose colour agrees, each channel within 8/255;
+// a pixel on a colour edge in both pictures, the anti-aliased rim, is left out), filled_px before
+// and after (fills alone), fills before and after, how many fills own a face of the regions
+// (fills_shown: a fill may own only faces that show nothing, a zero-area face or one under another
+// fill), and how many show on the picture (fills_visible: each fill has a colour of its own; more
+// than 12 px of it), and the filled area as the picture shows it (shown_filled_px before and after,
+// shown_filled_change_pct: the fills' colours, so no fill under ink). A last line per rig kind sums
+// up: bake_agree_pct_min and bake_agree_pct_median, the worst drawing, the largest filled-area
+// change (fills alone, and as shown), how many drawings changed their fill count (faces owned:
+// shown_fill_count_changed; on the picture: visible_fill_count_changed), how many meet all three
+// targets (meets_all_targets: agreement ≥ 99.5 %, filled area within 0.5 %, the same fills on the
+// picture), and Apply Pose's own time (apply_ms per drawing; median and max, on the UI thread in
+// the app).
 // --png writes, per drawing and rig, the posed picture, the baked one and the differences;
 // --rig pins|cage|skeleton_rigid|skeleton_blend|skeleton_cut_out measures that one alone;
 // --faces outlines the baked drawing's faces (green) and gap closures (magenta) on the
-// differences.
+// differences, and adds a fourth picture: the fills alone, under the lines too, before and
+// after (grey kept, red lost, blue gained: what filled_change_pct counts).
 #include "../model/bake_support.h"
 #include "bench.h"
 
@@ -177,6 +177,25 @@ VisibleFills visibleFills(const std::vector<Fill> &fills, const QImage &picture)
     return out;
 }
 
+// Two pictures of the fills alone (black on white) compared: grey where both are filled, red
+// where only `before` is, blue where only `after` is.
+QImage fillsDifference(const QImage &before, const QImage &after)
+{
+    QImage out(before.size(), QImage::Format_RGB32);
+    out.fill(Qt::white);
+    for (int y = 0; y < out.height(); ++y)
+        for (int x = 0; x < out.width(); ++x) {
+            const bool a = qRed(before.pixel(x, y)) < 128, b = qRed(after.pixel(x, y)) < 128;
+            if (a && b)
+                out.setPixel(x, y, qRgb(200, 200, 200));
+            else if (a)
+                out.setPixel(x, y, qRgb(230, 0, 0));
+            else if (b)
+                out.setPixel(x, y, qRgb(0, 60, 255));
+        }
+    return out;
+}
+
 struct Case {
     const char *name;
     RigKind kind;
@@ -237,8 +256,8 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     const QTransform t = finbook::testing::pictureView(
         finbook::testing::shownBounds(*doc.group(g)).adjusted(-5, -5, 5, 5), kPicture);
     const QImage posed = framePicture(doc, 0, t, kPicture);
-    const long long filledBefore =
-        finbook::testing::darkPixels(framePicture(doc, 0, t, kPicture, true));
+    const QImage fillsPosed = framePicture(doc, 0, t, kPicture, true);
+    const long long filledBefore = finbook::testing::darkPixels(fillsPosed);
     const int fillsBefore = int(doc.group(g)->fills.size());
     const int shownBefore = shownFills(*doc.group(g), closeGap);
     const VisibleFills visibleBefore = visibleFills(doc.group(g)->fills, posed);
@@ -247,8 +266,8 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     doc.undoStack()->push(new ApplyPoseCommand(&doc, g));
     const double applyMs = double(clock.nsecsElapsed()) / 1e6;
     const QImage baked = framePicture(doc, 0, t, kPicture);
-    const long long filledAfter =
-        finbook::testing::darkPixels(framePicture(doc, 0, t, kPicture, true));
+    const QImage fillsBaked = framePicture(doc, 0, t, kPicture, true);
+    const long long filledAfter = finbook::testing::darkPixels(fillsBaked);
     const finbook::testing::PictureAgreement cmp = finbook::testing::comparePictures(posed, baked);
     const int fillsAfter = int(doc.group(g)->fills.size());
     const int shownAfter = shownFills(*doc.group(g), closeGap);
@@ -288,7 +307,9 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     summary.meetsAll += cmp.agreePct >= 99.5 && std::abs(areaChange) <= 0.5 &&
                         visibleBefore.count == visibleAfter.count;
     if (!pngDir.isEmpty()) {
-        QImage sheet(3 * kPicture, kPicture, QImage::Format_RGB32);
+        const int panels = showFaces ? 4 : 3;
+        QImage sheet(panels * kPicture, kPicture, QImage::Format_RGB32);
+        sheet.fill(Qt::white);
         QPainter painter(&sheet);
         painter.drawImage(0, 0, posed);
         painter.drawImage(kPicture, 0, baked);
@@ -330,11 +351,16 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
                                  QPointF(closure.to.x(), closure.to.y()));
         }
         painter.restore();
+        if (showFaces) // the fills alone (under the lines too): grey kept, red lost, blue gained
+            painter.drawImage(3 * kPicture, 0, fillsDifference(fillsPosed, fillsBaked));
         painter.setPen(Qt::black);
-        painter.drawText(QRectF(5, 2, 3 * kPicture, 20),
-                         QStringLiteral("%1 %2: posed | applied | differences (%3 %)")
-                             .arg(QFileInfo(file).completeBaseName(), QLatin1String(c.name))
-                             .arg(cmp.agreePct, 0, 'f', 2));
+        painter.drawText(
+            QRectF(5, 2, panels * kPicture, 20),
+            QStringLiteral("%1 %2: posed | applied | differences (%3 %)%4")
+                .arg(QFileInfo(file).completeBaseName(), QLatin1String(c.name))
+                .arg(cmp.agreePct, 0, 'f', 2)
+                .arg(showFaces ? QStringLiteral(" | fills alone (%1 %)").arg(areaChange, 0, 'f', 2)
+                               : QString()));
         painter.end();
         sheet.save(QDir(pngDir).filePath(QFileInfo(file).completeBaseName() + QLatin1Char('_') +
                                          QLatin1String(c.name) + QStringLiteral(".png")));
