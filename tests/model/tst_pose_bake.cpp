@@ -989,6 +989,10 @@ void TestPoseBake::realDrawingsKeepTheirColours_data()
     row("flamingo, rigid", ours("quickdraw_flamingo_6406751433785344.json"), SkinningMode::Rigid);
     row("hedgehog, cut-out", ours("quickdraw_hedgehog_5292410760331264.json"),
         SkinningMode::CutOut);
+    // Two gap closers from one free end, nearly along each other: the baked chord stays.
+    row("camel, linear blend", ours("quickdraw_camel_5432781888815104.json"),
+        SkinningMode::LinearBlend);
+    row("camel, cut-out", ours("quickdraw_camel_5432781888815104.json"), SkinningMode::CutOut);
     // The wedge along its open mouth keeps its colour, but the seam meets a cut-out closer a
     // little below the line's end: a notch of 0.8 % of the filled area stays empty.
     row("mouse, cut-out", ours("quickdraw_mouse_5524323760603136.json"), SkinningMode::CutOut,

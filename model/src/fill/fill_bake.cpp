@@ -431,8 +431,10 @@ FillAgreement shownFillAgreement(const ShownPose &pose, const std::vector<Stroke
 
 std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                    double closeGap, const std::function<Id()> &newId,
-                                   GapMatch match)
+                                   GapMatch match, std::vector<Stroke> *rematched)
 {
+    if (rematched)
+        rematched->clear();
     if (group.fills.empty() || !group.isDeformed())
         return {};
     const ObjectRegionsPtr before = objectRegions(group, closeGap);
@@ -440,32 +442,74 @@ std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<S
     if (closures.empty())
         return {};
     const std::vector<QLineF> shown = before->displayedClosures(group);
-    StrokeGroup after;
-    after.strokes = baked;
-    const ObjectRegionsPtr regions = objectRegions(after, closeGap);
-    std::vector<Stroke> out;
-    for (std::size_t i = 0; i < shown.size() && i < closures.size(); ++i) {
-        const QLineF &line = shown[i];
+    const std::size_t count = std::min(shown.size(), closures.size());
+    const auto widthOf = [&](std::size_t i) {
         const int from = before->strokeOfInput(closures[i].fromStroke);
-        const float width = from >= 0 && std::size_t(from) < group.strokes.size() &&
-                                    group.strokes[std::size_t(from)].data
-                                ? group.strokes[std::size_t(from)].data->width
-                                : StrokeData().width;
-        const double near = (match == GapMatch::Near ? 2.0 : 0.5) * double(width) + 0.5;
-        const auto close = [near](QPointF a, const Eigen::Vector2d &b) {
-            return QLineF(a, QPointF(b.x(), b.y())).length() <= near;
-        };
-        const bool kept =
-            std::any_of(regions->regions().closures.begin(), regions->regions().closures.end(),
-                        [&](const geometry::GapClosure &c) {
-                            return (close(line.p1(), c.from) && close(line.p2(), c.to)) ||
-                                   (close(line.p1(), c.to) && close(line.p2(), c.from));
-                        });
-        if (kept || !(line.length() > 0.0) || !std::isfinite(line.length()) ||
-            runsAlongALine(baked, line))
-            continue;
-        out.push_back({newId(), lineOfNoInk({line.p1(), line.p2()}, width)});
+        return from >= 0 && std::size_t(from) < group.strokes.size() &&
+                       group.strokes[std::size_t(from)].data
+                   ? group.strokes[std::size_t(from)].data->width
+                   : StrokeData().width;
+    };
+    const auto reach = [&](std::size_t i, GapMatch m) {
+        return (m == GapMatch::Near ? 2.0 : 0.5) * double(widthOf(i)) + 0.5;
+    };
+    // Matching again is tried only where a closer drawn in ends on (within half a pen of) the
+    // end of one not drawn in: the end it took may have been that one's.
+    const auto sharesAnEnd = [&](std::size_t i, const QLineF &kept) {
+        const double near = reach(i, GapMatch::Exact);
+        for (const QPointF &a : {shown[i].p1(), shown[i].p2()})
+            for (const QPointF &b : {kept.p1(), kept.p2()})
+                if (QLineF(a, b).length() <= near)
+                    return true;
+        return false;
+    };
+    constexpr int kRounds = 3; // with `rematched`: the header says why
+    std::vector<Stroke> out;
+    std::vector<char> added(count, 0);
+    std::size_t firstRound = 0; // closers the first round drew in
+    for (int round = 0; round < (rematched ? kRounds : 1); ++round) {
+        if (round > 0) {
+            bool touched = false;
+            for (std::size_t i = 0; i < count && !touched; ++i)
+                for (std::size_t k = 0; k < count && !touched; ++k)
+                    touched = !added[i] && added[k] == round && sharesAnEnd(i, shown[k]);
+            if (!touched)
+                break;
+        }
+        StrokeGroup after;
+        after.strokes = baked;
+        after.strokes.insert(after.strokes.end(), out.begin(), out.end());
+        const ObjectRegionsPtr regions = objectRegions(after, closeGap);
+        bool grew = false;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (added[i])
+                continue;
+            const QLineF &line = shown[i];
+            const double near = reach(i, match);
+            const auto close = [near](QPointF a, const Eigen::Vector2d &b) {
+                return QLineF(a, QPointF(b.x(), b.y())).length() <= near;
+            };
+            const bool kept =
+                std::any_of(regions->regions().closures.begin(), regions->regions().closures.end(),
+                            [&](const geometry::GapClosure &c) {
+                                return (close(line.p1(), c.from) && close(line.p2(), c.to)) ||
+                                       (close(line.p1(), c.to) && close(line.p2(), c.from));
+                            });
+            if (kept || !(line.length() > 0.0) || !std::isfinite(line.length()) ||
+                runsAlongALine(baked, line))
+                continue;
+            out.push_back({newId(), lineOfNoInk({line.p1(), line.p2()}, widthOf(i))});
+            added[i] = char(round + 1);
+            grew = true;
+        }
+        if (round == 0)
+            firstRound = out.size();
+        if (!grew)
+            break;
     }
+    if (rematched && out.size() > firstRound)
+        *rematched = out;
+    out.resize(firstRound);
     return out;
 }
 

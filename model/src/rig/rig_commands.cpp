@@ -118,18 +118,30 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
     std::vector<Stroke> strokes = bakedStrokes(group, closeGap, newId, HiddenLines::KeepUnseen);
     // A gap the pose showed closed stays closed (by a line of no ink) where the baked lines
     // alone would leave it open, or close it a little further along a line (GapMatch::Exact,
-    // tried where it draws in more closers than GapMatch::Near).
+    // tried where it draws in more closers than GapMatch::Near); each also matched again with
+    // the kept closers in (`rematch`), tried where that draws in more.
+    using Ways = std::vector<std::vector<Stroke>>;
     const auto withKeptGaps = [&](const std::vector<Stroke> &lines) {
-        std::vector<std::vector<Stroke>> ways;
+        std::pair<Ways, Ways> out; // as matched, and matched again
+        auto &[ways, rematchedWays] = out;
+        const auto add = [&](std::vector<std::vector<Stroke>> &to, std::vector<Stroke> closers) {
+            to.push_back(lines);
+            to.back().insert(to.back().end(), std::make_move_iterator(closers.begin()),
+                             std::make_move_iterator(closers.end()));
+        };
+        std::size_t nearCount = 0;
         for (const GapMatch match : {GapMatch::Near, GapMatch::Exact}) {
-            std::vector<Stroke> closers = keptGapClosers(group, lines, closeGap, newId, match);
-            if (!ways.empty() && ways.front().size() == lines.size() + closers.size())
+            std::vector<Stroke> rematched;
+            std::vector<Stroke> closers =
+                keptGapClosers(group, lines, closeGap, newId, match, &rematched);
+            if (match == GapMatch::Exact && closers.size() == nearCount)
                 break;
-            ways.push_back(lines);
-            ways.back().insert(ways.back().end(), std::make_move_iterator(closers.begin()),
-                               std::make_move_iterator(closers.end()));
+            nearCount = closers.size();
+            add(ways, std::move(closers));
+            if (!rematched.empty())
+                add(rematchedWays, std::move(rematched));
         }
-        return ways;
+        return out;
     };
     // A cut-out piece's colour ends at its cut, where no line is: a line of no ink keeps the
     // baked regions ending there too (added before the kept gaps: a region they close, a
@@ -137,19 +149,26 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
     // closed). Those lines do not find every region of every drawing, so the bake keeps them
     // only where they keep more of the colours the pose showed than the baked lines alone.
     // Tried in this order, the first of equals kept: without the cut lines, with them, then the
-    // same with the gaps matched exactly.
+    // same with the gaps matched exactly, then both rematched.
     std::vector<Stroke> cut = cutOutClosers(group, strokes, closeGap, newId);
-    std::vector<std::vector<Stroke>> without = withKeptGaps(strokes);
-    std::vector<std::vector<Stroke>> withCuts;
+    std::pair<Ways, Ways> without = withKeptGaps(strokes);
+    std::pair<Ways, Ways> withCuts;
     if (!cut.empty()) {
         strokes.insert(strokes.end(), cut.begin(), cut.end());
         withCuts = withKeptGaps(strokes);
     }
-    std::vector<std::vector<Stroke>> ways;
-    for (std::size_t i = 0; i < 2; ++i)
-        for (std::vector<std::vector<Stroke>> *set : {&without, &withCuts})
-            if (i < set->size())
-                ways.push_back(std::move((*set)[i]));
+    Ways ways;
+    std::size_t firstRematched = 0;
+    for (const bool rematched : {false, true}) {
+        Ways &a = rematched ? without.second : without.first;
+        Ways &b = rematched ? withCuts.second : withCuts.first;
+        for (std::size_t i = 0; i < std::max(a.size(), b.size()); ++i)
+            for (Ways *set : {&a, &b})
+                if (i < set->size())
+                    ways.push_back(std::move((*set)[i]));
+        if (!rematched)
+            firstRematched = ways.size();
+    }
     // Where the baked faces of a way still join colours the pose showed apart, lines of no ink
     // along the edge between them as painted: the seams, the seams left off the ink, or the
     // seams across thin ink (outside every face), each with the gaps closed now kept closed or
@@ -168,6 +187,13 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
                            i);
     std::stable_sort(order.begin(), order.end(),
                      [](const auto &a, const auto &b) { return a.first > b.first; });
+    // A way matched again is weighed with its seams only when it stands better than every
+    // way as first matched (it is one of them with a few closers more, and each weighing
+    // costs a regions computation or more).
+    FillAgreement bestFirstMatched{-1.0, -1.0};
+    for (const auto &[agreement, i] : order)
+        if (i < firstRematched)
+            bestFirstMatched = std::max(bestFirstMatched, agreement);
     FillAgreement best{-1.0, -1.0};
     std::vector<Stroke> chosen;
     const auto consider = [&](const std::vector<Stroke> &lines, const FillAgreement &agreement) {
@@ -179,6 +205,8 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
     for (const auto &taken : order) {
         if (best.atLeast(kKeptEnough))
             break;
+        if (taken.second >= firstRematched && !(taken.first > bestFirstMatched))
+            continue;
         const std::vector<Stroke> &way = ways[taken.second];
         for (const double widerThanPen : {kSeamWiderThanPen, 1.0}) {
             if (best.whole())

@@ -128,10 +128,20 @@ double medianInkWidth(const std::vector<Stroke> &strokes);
 // closer runs from where the rest drawing found it) leaves a wedge on the other side that the
 // pose showed filled or empty, so the pose's own closer is drawn in; which keeps more of what
 // the pose showed depends on the drawing (Apply Pose tries both).
+//
+// A closer kept as a line of no ink takes its ends' freedom, so the baked regions may then no
+// longer make a closer that they made without it (two closers from one free end: a chord across
+// a leg's top and, nearly along it, one to a hook's end beside it; kept, the second takes the
+// end and the chord is gone). With `rematched`, the closers are matched again against the
+// regions with the kept ones in (up to three times, while a closer drawn in ends within half a
+// pen of the end of one not drawn in), and all the closers drawn in then go to `*rematched` when
+// that is more than the first match drew in (else it is left empty); whether that keeps more of
+// what the pose showed depends on the drawing too (Apply Pose tries both).
 enum class GapMatch { Near, Exact };
 std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                    double closeGap, const std::function<Id()> &newId,
-                                   GapMatch match = GapMatch::Near);
+                                   GapMatch match = GapMatch::Near,
+                                   std::vector<Stroke> *rematched = nullptr);
 
 // Where a face of the baked drawing (`baked`) would take one colour but the pose showed two
 // (or a colour and none) on it, say where a limb's cut or a fold left no line between them,
