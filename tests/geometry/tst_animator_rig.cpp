@@ -90,6 +90,7 @@ private slots:
     void bentArmGetsAnElbow();
     void longStraightArmGetsAMiddleJoint();
     void loosePiecesHangFromNearestBone();
+    void legsDrawnApartHangFromTheBodyTheyMeet();
     void crossOfTwoObjectsJoins();
     void prongBesideALongerBranchGoes();
     void stripOfABrokenLoopLeavesTheBodyWhereItNarrows();
@@ -250,6 +251,43 @@ void TestAnimatorRig::loosePiecesHangFromNearestBone()
     for (int j = 0; j < two.jointCount(); ++j)
         if (two.parent(j) >= 0)
             QVERIFY(std::abs(two.joints(j, 1) - two.joints(two.parent(j), 1)) < 250.0);
+}
+
+void TestAnimatorRig::legsDrawnApartHangFromTheBodyTheyMeet()
+{
+    // A cow drawn as a thick body with four legs as lines under it, each stopping 20 px short
+    // of the belly; the front two legs 50 px apart, nearer each other than the body's bone
+    // (80 px above them). Each leg hangs from the body where it meets it, never from the leg
+    // beside it by a bone through the air between them.
+    const std::array<double, 4> legs{40.0, 90.0, 210.0, 260.0};
+    std::vector<StrokeInput> strokes{{rows({{0, 0}, {300, 0}}), 160.0}};
+    for (double x : legs)
+        strokes.push_back({rows({{x, 106}, {x, 250}}), 12.0});
+    const Region shape = shapeOf(strokes);
+    QCOMPARE(int(shape.size()), 5);
+    const Skeleton s = rigOf(shape);
+    QVERIFY(isValidSkeleton(s));
+    QCOMPARE(int((s.parent.array() < 0).count()), 1); // one tree
+    for (int j = 0; j < s.jointCount(); ++j) {
+        const int p = s.parent(j);
+        if (p < 0)
+            continue;
+        // Below the belly (y > 80), a bone runs down one leg only.
+        if (s.joints(j, 1) > 84.0 && s.joints(p, 1) > 84.0)
+            QVERIFY2(std::abs(s.joints(j, 0) - s.joints(p, 0)) < 15.0,
+                     qPrintable(QStringLiteral("bone %1-%2 from x %3 to %4")
+                                    .arg(p)
+                                    .arg(j)
+                                    .arg(s.joints(p, 0))
+                                    .arg(s.joints(j, 0))));
+    }
+    // Out of the shape: the four gaps the bridges cross, not a bone along the belly.
+    double bonePx = 0.0;
+    for (int j = 0; j < s.jointCount(); ++j)
+        if (s.parent(j) >= 0)
+            bonePx += (s.joints.row(j) - s.joints.row(s.parent(j))).norm();
+    const double air = (1.0 - bonesInside(s, shape)) * bonePx;
+    QVERIFY2(air < 4 * 20.0 + 10.0, qPrintable(QString::number(air)));
 }
 
 void TestAnimatorRig::crossOfTwoObjectsJoins()

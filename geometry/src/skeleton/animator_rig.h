@@ -66,13 +66,15 @@ int thickestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, in
 // limb has places along it where limbJoints can put a joint.
 void subdivideLongEdges(DenseGraph &graph);
 
-// Joins the trees of the forest to the tree of `root`, nearest first: a tree hangs by its
-// joint nearest to an attached bone, from that bone (split there by a new joint when the point
-// lies inside it, else from its nearer end). polygonOf grows with the new joints. Only pieces
-// that touch or nearly touch are joined (issue 48): a piece whose polygon of `contour` lies
-// further from the attached pieces' polygons than the thicker of the two pieces' widest
-// radius keeps a tree of its own, and the pieces near it hang from it (a second bird, the
-// letters of a word are not hung across open air).
+// Joins the trees of the forest to the tree of `root`, nearest first (the tree with the joint
+// nearest to an attached bone). Only pieces that touch or nearly touch are joined (issue 48): a
+// piece whose polygon of `contour` lies further from the attached pieces' polygons than the
+// thicker of the two pieces' widest radius keeps a tree of its own, and the pieces near it hang
+// from it (a second bird, the letters of a word are not hung across open air). A joined tree
+// hangs where the outlines come closest: by its joint nearest that contact, from the bone of
+// the attached piece nearest the contact on its side (split there by a new joint when the
+// point lies inside it, else from its nearer end); without polygons to say, by its joint
+// nearest to an attached bone, from that bone. polygonOf grows with the new joints.
 void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root, const Region &contour);
 
 } // namespace finbook::geometry::detail

@@ -57,6 +57,38 @@ bool nearlyTouches(const JointGraph &graph, const std::vector<int> &polygonOf,
     return false;
 }
 
+// Where two pieces' outer outlines come closest: a point on each (vertex to edge, both ways).
+struct Contact {
+    Eigen::Vector2d onChild = Eigen::Vector2d::Zero(), onParent = Eigen::Vector2d::Zero();
+    double distance = std::numeric_limits<double>::infinity();
+};
+
+Contact closestContact(const Polygon &child, const Polygon &parent)
+{
+    Contact out;
+    const auto scan = [&](const Eigen::MatrixX2d &from, const Eigen::MatrixX2d &to,
+                          bool fromChild) {
+        const Eigen::Index n = to.rows();
+        for (Eigen::Index i = 0; i < from.rows(); ++i) {
+            const Eigen::Vector2d p = from.row(i).transpose();
+            for (Eigen::Index k = 0; k < n; ++k) {
+                const Eigen::Vector2d a = to.row(k).transpose(),
+                                      b = to.row((k + 1) % n).transpose();
+                const Eigen::Vector2d q = nearestOnSegment(p, a, b);
+                const double d = (q - p).norm();
+                if (d < out.distance) {
+                    out.distance = d;
+                    out.onChild = fromChild ? p : q;
+                    out.onParent = fromChild ? q : p;
+                }
+            }
+        }
+    };
+    scan(child.outer, parent.outer, true);
+    scan(parent.outer, child.outer, false);
+    return out;
+}
+
 } // namespace
 
 int thickestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, int polygon)
@@ -77,6 +109,98 @@ int thickestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, in
         return bestInner;
     return best;
 }
+
+namespace {
+
+// A piece that nearly touches the attached ones hangs where it comes closest to them, not by
+// whichever of its joints lies nearest some attached bone: a cow's legs drawn as lines under
+// its body each hang from the body's bone above them, not one from the next along the belly
+// (a bone through the air between them), and a tree's trunk line from the crown it meets.
+// `child` becomes the joint of its tree nearest that contact, and from–to (at bestT) the bone
+// of the attached piece it comes closest to nearest the contact there. Left as it is when the
+// pieces' outlines cannot say (no polygon, no joint of that piece attached).
+void aimAtContact(const JointGraph &graph, const std::vector<int> &polygonOf,
+                  const std::vector<char> &attached, const Region &contour, int &child, int &from,
+                  int &to, double &bestT)
+{
+    const int piece = polygonOf[std::size_t(child)];
+    if (piece < 0 || std::size_t(piece) >= contour.size())
+        return;
+    // The child's tree (its free joints connected to it).
+    std::vector<char> inTree(std::size_t(graph.size()), 0);
+    std::vector<int> stack{child}, tree;
+    inTree[std::size_t(child)] = 1;
+    while (!stack.empty()) {
+        const int v = stack.back();
+        stack.pop_back();
+        tree.push_back(v);
+        for (int n : graph.adj[std::size_t(v)])
+            if (!attached[std::size_t(n)] && !inTree[std::size_t(n)]) {
+                inTree[std::size_t(n)] = 1;
+                stack.push_back(n);
+            }
+    }
+    // The attached piece whose outline comes closest.
+    std::vector<char> reached(contour.size(), 0);
+    for (int j = 0; j < graph.size(); ++j) {
+        const int p = polygonOf[std::size_t(j)];
+        if (attached[std::size_t(j)] && p >= 0 && std::size_t(p) < contour.size())
+            reached[std::size_t(p)] = 1;
+    }
+    Contact best;
+    int parentPiece = -1;
+    for (std::size_t p = 0; p < contour.size(); ++p) {
+        if (!reached[p] || int(p) == piece)
+            continue;
+        const Contact c = closestContact(contour[std::size_t(piece)], contour[p]);
+        if (c.distance < best.distance) {
+            best = c;
+            parentPiece = int(p);
+        }
+    }
+    if (parentPiece < 0)
+        return;
+    // The bone (or lone joint) of that piece nearest the contact on its side.
+    double nearest = std::numeric_limits<double>::infinity();
+    int a0 = -1, b0 = -1;
+    double t0 = 0.0;
+    for (int a = 0; a < graph.size(); ++a) {
+        if (!attached[std::size_t(a)] || polygonOf[std::size_t(a)] != parentPiece)
+            continue;
+        const auto consider = [&](int b) {
+            const Eigen::Vector2d &pa = graph.pos[std::size_t(a)], &pb = graph.pos[std::size_t(b)];
+            const double t = segmentPointT(best.onParent, pa, pb);
+            const double d = (best.onParent - (pa + t * (pb - pa))).norm();
+            if (d < nearest) {
+                nearest = d;
+                a0 = a;
+                b0 = b;
+                t0 = t;
+            }
+        };
+        consider(a);
+        for (int b : graph.adj[std::size_t(a)])
+            if (b > a && attached[std::size_t(b)] && polygonOf[std::size_t(b)] == parentPiece)
+                consider(b);
+    }
+    if (a0 < 0)
+        return;
+    int hangBy = child;
+    double closest = std::numeric_limits<double>::infinity();
+    for (int j : tree) {
+        const double d = (graph.pos[std::size_t(j)] - best.onChild).norm();
+        if (d < closest) {
+            closest = d;
+            hangBy = j;
+        }
+    }
+    child = hangBy;
+    from = a0;
+    to = b0;
+    bestT = t0;
+}
+
+} // namespace
 
 void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root, const Region &contour)
 {
@@ -132,6 +256,8 @@ void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root, const 
         if (child < 0)
             return;
         const bool near = nearlyTouches(graph, polygonOf, attached, child, contour);
+        if (near)
+            aimAtContact(graph, polygonOf, attached, contour, child, from, to, bestT);
         attachTree(child);
         if (!near)
             continue; // a tree of its own; the pieces near it hang from it
