@@ -194,6 +194,15 @@ void aimAtContact(const JointGraph &graph, const std::vector<int> &polygonOf,
             hangBy = j;
         }
     }
+    // Near a tip of that piece (a body's end), hang from the tip itself: a split there would
+    // leave a stub of the body beyond the new joint, a spur.
+    if (a0 != b0) {
+        const double length = (graph.pos[std::size_t(b0)] - graph.pos[std::size_t(a0)]).norm();
+        for (const auto &[end, t] : {std::pair{a0, 0.0}, std::pair{b0, 1.0}})
+            if (graph.adj[std::size_t(end)].size() == 1 &&
+                std::abs(t0 - t) * length <= graph.radius[std::size_t(end)])
+                t0 = t;
+    }
     child = hangBy;
     from = a0;
     to = b0;
