@@ -91,6 +91,7 @@ private slots:
     void longStraightArmGetsAMiddleJoint();
     void loosePiecesHangFromNearestBone();
     void legsDrawnApartHangFromTheBodyTheyMeet();
+    void ellipseBodyHoldsTheRootAndItsLegs();
     void crossOfTwoObjectsJoins();
     void prongBesideALongerBranchGoes();
     void stripOfABrokenLoopLeavesTheBodyWhereItNarrows();
@@ -288,6 +289,39 @@ void TestAnimatorRig::legsDrawnApartHangFromTheBodyTheyMeet()
             bonePx += (s.joints.row(j) - s.joints.row(s.parent(j))).norm();
     const double air = (1.0 - bonesInside(s, shape)) * bonePx;
     QVERIFY2(air < 4 * 20.0 + 10.0, qPrintable(QString::number(air)));
+}
+
+void TestAnimatorRig::ellipseBodyHoldsTheRootAndItsLegs()
+{
+    // A cow drawn with the pen: its body an ellipse (500 × 234 px), a round head beyond its
+    // front, four legs as lines under it, the outer two under the body's curved ends (about
+    // 70 px below it, the inner two 30 px). The body's medial axis has joints only at its ends,
+    // where the inscribed radius is b²/a = 55 px, less than half the middle's 117: measured at
+    // its joints the head (radius 60) was the thickest part and held the root, the body hanging
+    // from the neck, and the outer legs lay further from the body than its "widest radius" and
+    // kept trees of their own.
+    const auto ring = [](double cx, double cy, double rx, double ry, double start) {
+        Eigen::MatrixX2d out(61, 2);
+        for (int i = 0; i <= 60; ++i) {
+            const double t = start + 2.0 * M_PI * i / 60;
+            out.row(i) << cx + rx * std::cos(t), cy + ry * std::sin(t);
+        }
+        return out;
+    };
+    std::vector<StrokeInput> strokes{{ring(0, 0, 250, 117, 0.0), 3.0},
+                                     {ring(308, -100, 70, 67, 2.5), 3.0}};
+    for (double x : {-183.0, -67.0, 100.0, 217.0})
+        strokes.push_back({rows({{x, 145}, {x, 338}}), 3.0});
+    const Region shape = shapeOf(strokes);
+    QCOMPARE(int(shape.size()), 6);
+    const Skeleton s = rigOf(shape);
+    QVERIFY(isValidSkeleton(s));
+    QCOMPARE(int((s.parent.array() < 0).count()), 1); // every leg hangs from the body
+    QVERIFY(s.root >= 0);
+    const Eigen::RowVector2d root = s.joints.row(s.root);
+    QVERIFY2(std::abs(root.x()) < 150.0 && std::abs(root.y()) < 30.0,
+             qPrintable(QStringLiteral("root at %1, %2").arg(root.x()).arg(root.y())));
+    QVERIFY2(s.radius(s.root) > 100.0, qPrintable(QString::number(s.radius(s.root))));
 }
 
 void TestAnimatorRig::crossOfTwoObjectsJoins()

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace finbook::geometry::detail {
 namespace {
@@ -32,6 +33,41 @@ double outlineDistance(const Polygon &a, const Polygon &b)
     return best;
 }
 
+// Per polygon of `contour`, its widest inscribed radius where its bones run: the joints' radii,
+// and the clearance sampled along each bone of that polygon (an ellipse's medial axis has
+// joints only at its ends, where the radius is a fraction of the middle's: a cow's body drawn
+// as an ellipse measured half as thick as it is, and a leg under its far end was left alone).
+std::vector<double> widestRadii(const JointGraph &graph, const std::vector<int> &polygonOf,
+                                const Region &contour)
+{
+    constexpr int kSamples = 8; // per bone
+    std::vector<double> widest(contour.size(), 0.0);
+    std::vector<std::optional<ContourIndex>> index(contour.size());
+    for (int j = 0; j < graph.size(); ++j) {
+        const int p = polygonOf[std::size_t(j)];
+        if (p < 0 || std::size_t(p) >= contour.size())
+            continue;
+        double &w = widest[std::size_t(p)];
+        w = std::max(w, graph.radius[std::size_t(j)]);
+        for (int n : graph.adj[std::size_t(j)]) {
+            if (n < j || polygonOf[std::size_t(n)] != p)
+                continue;
+            auto &at = index[std::size_t(p)];
+            if (!at)
+                at.emplace(Polygon{contour[std::size_t(p)].outer, contour[std::size_t(p)].holes});
+            for (int k = 1; k < kSamples; ++k) {
+                const double t = double(k) / kSamples;
+                const Eigen::Vector2d q =
+                    graph.pos[std::size_t(j)] +
+                    t * (graph.pos[std::size_t(n)] - graph.pos[std::size_t(j)]);
+                if (at->inside(q))
+                    w = std::max(w, at->distance(q));
+            }
+        }
+    }
+    return widest;
+}
+
 // Whether the piece (polygon) of `child` touches or nearly touches a polygon of the attached
 // joints: their outlines within kPieceReach of the thicker piece's widest radius.
 bool nearlyTouches(const JointGraph &graph, const std::vector<int> &polygonOf,
@@ -40,15 +76,13 @@ bool nearlyTouches(const JointGraph &graph, const std::vector<int> &polygonOf,
     const int piece = polygonOf[std::size_t(child)];
     if (piece < 0 || std::size_t(piece) >= contour.size())
         return true; // no outline to measure: as before, joined
-    std::vector<double> widest(contour.size(), 0.0);
     std::vector<char> reached(contour.size(), 0);
     for (int j = 0; j < graph.size(); ++j) {
         const int p = polygonOf[std::size_t(j)];
-        if (p < 0 || std::size_t(p) >= contour.size())
-            continue;
-        widest[std::size_t(p)] = std::max(widest[std::size_t(p)], graph.radius[std::size_t(j)]);
-        reached[std::size_t(p)] |= attached[std::size_t(j)];
+        if (p >= 0 && std::size_t(p) < contour.size())
+            reached[std::size_t(p)] |= attached[std::size_t(j)];
     }
+    const std::vector<double> widest = widestRadii(graph, polygonOf, contour);
     for (std::size_t p = 0; p < contour.size(); ++p)
         if (reached[p] && int(p) != piece &&
             outlineDistance(contour[std::size_t(piece)], contour[p]) <=
@@ -90,6 +124,54 @@ Contact closestContact(const Polygon &child, const Polygon &parent)
 }
 
 } // namespace
+
+void jointsWhereThickest(JointGraph &graph, std::vector<int> &polygonOf, const Region &contour)
+{
+    constexpr int kSamples = 16;          // per bone
+    constexpr double kMuchThicker = 1.25; // than the piece's thickest joint
+    for (std::size_t p = 0; p < contour.size(); ++p) {
+        const ContourIndex index(Polygon{contour[p].outer, contour[p].holes});
+        double thickestJointRadius = 0.0, best = 0.0, bestT = 0.0;
+        int from = -1, to = -1;
+        const int joints = graph.size();
+        for (int j = 0; j < joints; ++j) {
+            if (polygonOf[std::size_t(j)] != int(p))
+                continue;
+            // A joint's own clearance too (a star's centre junction can carry less).
+            thickestJointRadius = std::max({thickestJointRadius, graph.radius[std::size_t(j)],
+                                            index.inside(graph.pos[std::size_t(j)])
+                                                ? index.distance(graph.pos[std::size_t(j)])
+                                                : 0.0});
+            for (int n : graph.adj[std::size_t(j)]) {
+                if (n < j || polygonOf[std::size_t(n)] != int(p))
+                    continue;
+                for (int k = 1; k < kSamples; ++k) {
+                    const double t = double(k) / kSamples;
+                    const Eigen::Vector2d q =
+                        graph.pos[std::size_t(j)] +
+                        t * (graph.pos[std::size_t(n)] - graph.pos[std::size_t(j)]);
+                    const double clearance = index.inside(q) ? index.distance(q) : 0.0;
+                    if (clearance > best) {
+                        best = clearance;
+                        bestT = t;
+                        from = j;
+                        to = n;
+                    }
+                }
+            }
+        }
+        if (from < 0 || !(best > kMuchThicker * thickestJointRadius))
+            continue;
+        const Eigen::Vector2d at =
+            graph.pos[std::size_t(from)] +
+            bestT * (graph.pos[std::size_t(to)] - graph.pos[std::size_t(from)]);
+        const int middle = graph.add(at, best, graph.part[std::size_t(from)]);
+        polygonOf.push_back(int(p));
+        graph.disconnect(from, to);
+        graph.connect(from, middle);
+        graph.connect(middle, to);
+    }
+}
 
 int thickestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, int polygon)
 {
