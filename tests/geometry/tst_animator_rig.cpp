@@ -91,7 +91,7 @@ private slots:
     void longStraightArmGetsAMiddleJoint();
     void loosePiecesHangFromNearestBone();
     void legsDrawnApartHangFromTheBodyTheyMeet();
-    void ellipseBodyHoldsTheRootAndItsLegs();
+    void ellipseBodyHoldsItsLegs();
     void crossOfTwoObjectsJoins();
     void prongBesideALongerBranchGoes();
     void stripOfABrokenLoopLeavesTheBodyWhereItNarrows();
@@ -291,15 +291,14 @@ void TestAnimatorRig::legsDrawnApartHangFromTheBodyTheyMeet()
     QVERIFY2(air < 4 * 20.0 + 10.0, qPrintable(QString::number(air)));
 }
 
-void TestAnimatorRig::ellipseBodyHoldsTheRootAndItsLegs()
+void TestAnimatorRig::ellipseBodyHoldsItsLegs()
 {
     // A cow drawn with the pen: its body an ellipse (500 × 234 px), a round head beyond its
     // front, four legs as lines under it, the outer two under the body's curved ends (about
     // 70 px below it, the inner two 30 px). The body's medial axis has joints only at its ends,
     // where the inscribed radius is b²/a = 55 px, less than half the middle's 117: measured at
-    // its joints the head (radius 60) was the thickest part and held the root, the body hanging
-    // from the neck, and the outer legs lay further from the body than its "widest radius" and
-    // kept trees of their own.
+    // its joints, the outer legs lay further from the body than its "widest radius" and kept
+    // trees of their own.
     const auto ring = [](double cx, double cy, double rx, double ry, double start) {
         Eigen::MatrixX2d out(61, 2);
         for (int i = 0; i <= 60; ++i) {
@@ -317,11 +316,6 @@ void TestAnimatorRig::ellipseBodyHoldsTheRootAndItsLegs()
     const Skeleton s = rigOf(shape);
     QVERIFY(isValidSkeleton(s));
     QCOMPARE(int((s.parent.array() < 0).count()), 1); // every leg hangs from the body
-    QVERIFY(s.root >= 0);
-    const Eigen::RowVector2d root = s.joints.row(s.root);
-    QVERIFY2(std::abs(root.x()) < 150.0 && std::abs(root.y()) < 30.0,
-             qPrintable(QStringLiteral("root at %1, %2").arg(root.x()).arg(root.y())));
-    QVERIFY2(s.radius(s.root) > 100.0, qPrintable(QString::number(s.radius(s.root))));
 }
 
 void TestAnimatorRig::crossOfTwoObjectsJoins()

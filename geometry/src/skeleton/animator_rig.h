@@ -61,12 +61,6 @@ void trimTinyTips(DenseGraph &bones, const Contours &contours);
 // or an inner joint at least 90 % as thick: where the body is thickest.
 int thickestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, int polygon);
 
-// Where a piece of `contour` is much thicker in the middle of a bone than at any of its joints
-// (a body drawn as an ellipse: its medial axis has joints only at its ends, where the radius is
-// a fraction of the middle's), a joint there, so the root can sit where the body is thickest
-// (a cow's root was in its head, the body hanging from the neck). polygonOf grows with it.
-void jointsWhereThickest(JointGraph &graph, std::vector<int> &polygonOf, const Region &contour);
-
 // Splits skeleton edges longer than the width at their ends into pieces about that long
 // (radius and clearance interpolated; exact along a straight-skeleton edge), so a straight
 // limb has places along it where limbJoints can put a joint.

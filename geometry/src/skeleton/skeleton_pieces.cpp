@@ -125,54 +125,6 @@ Contact closestContact(const Polygon &child, const Polygon &parent)
 
 } // namespace
 
-void jointsWhereThickest(JointGraph &graph, std::vector<int> &polygonOf, const Region &contour)
-{
-    constexpr int kSamples = 16;          // per bone
-    constexpr double kMuchThicker = 1.25; // than the piece's thickest joint
-    for (std::size_t p = 0; p < contour.size(); ++p) {
-        const ContourIndex index(Polygon{contour[p].outer, contour[p].holes});
-        double thickestJointRadius = 0.0, best = 0.0, bestT = 0.0;
-        int from = -1, to = -1;
-        const int joints = graph.size();
-        for (int j = 0; j < joints; ++j) {
-            if (polygonOf[std::size_t(j)] != int(p))
-                continue;
-            // A joint's own clearance too (a star's centre junction can carry less).
-            thickestJointRadius = std::max({thickestJointRadius, graph.radius[std::size_t(j)],
-                                            index.inside(graph.pos[std::size_t(j)])
-                                                ? index.distance(graph.pos[std::size_t(j)])
-                                                : 0.0});
-            for (int n : graph.adj[std::size_t(j)]) {
-                if (n < j || polygonOf[std::size_t(n)] != int(p))
-                    continue;
-                for (int k = 1; k < kSamples; ++k) {
-                    const double t = double(k) / kSamples;
-                    const Eigen::Vector2d q =
-                        graph.pos[std::size_t(j)] +
-                        t * (graph.pos[std::size_t(n)] - graph.pos[std::size_t(j)]);
-                    const double clearance = index.inside(q) ? index.distance(q) : 0.0;
-                    if (clearance > best) {
-                        best = clearance;
-                        bestT = t;
-                        from = j;
-                        to = n;
-                    }
-                }
-            }
-        }
-        if (from < 0 || !(best > kMuchThicker * thickestJointRadius))
-            continue;
-        const Eigen::Vector2d at =
-            graph.pos[std::size_t(from)] +
-            bestT * (graph.pos[std::size_t(to)] - graph.pos[std::size_t(from)]);
-        const int middle = graph.add(at, best, graph.part[std::size_t(from)]);
-        polygonOf.push_back(int(p));
-        graph.disconnect(from, to);
-        graph.connect(from, middle);
-        graph.connect(middle, to);
-    }
-}
-
 int thickestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, int polygon)
 {
     // The largest disk; an inner joint nearly as thick (90 %) wins over a tip.

@@ -134,8 +134,6 @@ Skeleton rooted(const DenseGraph &bones, const RawSkeleton &raw, const RefineOpt
         for (int n : bones.adj[std::size_t(v)])
             graph.connect(index[std::size_t(v)], index[std::size_t(n)]);
     }
-    if (options.animatorRig && !options.rootNear)
-        jointsWhereThickest(graph, polygonOf, raw.contour);
     const Eigen::Vector2d target =
         options.rootNear ? *options.rootNear : Eigen::Vector2d(raw.centroid.transpose());
     std::vector<int> roots;
