@@ -69,9 +69,10 @@ std::vector<double> widestRadii(const JointGraph &graph, const std::vector<int> 
 }
 
 // Whether the piece (polygon) of `child` touches or nearly touches a polygon of the attached
-// joints: their outlines within kPieceReach of the thicker piece's widest radius.
+// joints: their outlines within kPieceReach of the thicker piece's widest radius (widestRadii).
 bool nearlyTouches(const JointGraph &graph, const std::vector<int> &polygonOf,
-                   const std::vector<char> &attached, int child, const Region &contour)
+                   const std::vector<char> &attached, int child, const Region &contour,
+                   const std::vector<double> &widest)
 {
     const int piece = polygonOf[std::size_t(child)];
     if (piece < 0 || std::size_t(piece) >= contour.size())
@@ -82,7 +83,6 @@ bool nearlyTouches(const JointGraph &graph, const std::vector<int> &polygonOf,
         if (p >= 0 && std::size_t(p) < contour.size())
             reached[std::size_t(p)] |= attached[std::size_t(j)];
     }
-    const std::vector<double> widest = widestRadii(graph, polygonOf, contour);
     for (std::size_t p = 0; p < contour.size(); ++p)
         if (reached[p] && int(p) != piece &&
             outlineDistance(contour[std::size_t(piece)], contour[p]) <=
@@ -265,6 +265,8 @@ void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root, const 
         }
     };
     attachTree(root);
+    // Measured once: a joint split into a bone below takes the bone's own radius there.
+    const std::vector<double> widest = widestRadii(graph, polygonOf, contour);
     for (;;) {
         // The free joint nearest to an attached bone (or lone attached joint).
         double best = std::numeric_limits<double>::infinity(), bestT = 0.0;
@@ -298,7 +300,7 @@ void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root, const 
         }
         if (child < 0)
             return;
-        const bool near = nearlyTouches(graph, polygonOf, attached, child, contour);
+        const bool near = nearlyTouches(graph, polygonOf, attached, child, contour, widest);
         if (near)
             aimAtContact(graph, polygonOf, attached, contour, child, from, to, bestT);
         attachTree(child);
