@@ -11,13 +11,13 @@
 // (fills_shown: a fill may own only faces that show nothing, a zero-area face or one under another
 // fill), and how many show on the picture (fills_visible: each fill has a colour of its own; more
 // than 12 px of it), and the filled area as the picture shows it (shown_filled_px before and after,
-// shown_filled_change_pct: the fills' colours, so no fill under ink). A last line per rig kind sums
-// up: bake_agree_pct_min and bake_agree_pct_median, the worst drawing, the largest filled-area
-// change (fills alone, and as shown), how many drawings changed their fill count (faces owned:
-// shown_fill_count_changed; on the picture: visible_fill_count_changed), how many meet all three
-// targets (meets_all_targets: agreement ≥ 99.5 %, filled area within 0.5 %, the same fills on the
-// picture), and Apply Pose's own time (apply_ms per drawing; median and max, on the UI thread in
-// the app).
+// shown_filled_change_pct: the fills' colours, so no fill under ink).
+// A last line per rig kind sums up: bake_agree_pct_min and bake_agree_pct_median, the worst
+// drawing, the largest filled-area change (fills alone, and as shown), how many drawings changed
+// their fill count (faces owned: shown_fill_count_changed; on the picture:
+// visible_fill_count_changed), how many meet all three targets (meets_all_targets:
+// agreement ≥ 99.5 %, filled area within 0.5 %, the same fills on the picture), and Apply Pose's
+// own time (apply_ms per drawing; median and max, on the UI thread in the app).
 // --png writes, per drawing and rig, the posed picture, the baked one and the differences;
 // --rig pins|cage|skeleton_rigid|skeleton_blend|skeleton_cut_out measures that one alone;
 // --faces outlines the baked drawing's faces (green) and gap closures (magenta) on the
@@ -177,8 +177,8 @@ VisibleFills visibleFills(const std::vector<Fill> &fills, const QImage &picture)
     return out;
 }
 
-// Two pictures of the fills alone (black on white) compared: grey where both are filled, red
-// where only `before` is, blue where only `after` is.
+// Two pictures of the fills alone (black on white) compared, a pixel filled as darkPixels counts
+// it: grey where both are filled, red where only `before` is, blue where only `after` is.
 QImage fillsDifference(const QImage &before, const QImage &after)
 {
     QImage out(before.size(), QImage::Format_RGB32);

@@ -124,7 +124,7 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
     const auto withKeptGaps = [&](const std::vector<Stroke> &lines) {
         std::pair<Ways, Ways> out; // as matched, and matched again
         auto &[ways, rematchedWays] = out;
-        const auto add = [&](std::vector<std::vector<Stroke>> &to, std::vector<Stroke> closers) {
+        const auto add = [&](Ways &to, std::vector<Stroke> closers) {
             to.push_back(lines);
             to.back().insert(to.back().end(), std::make_move_iterator(closers.begin()),
                              std::make_move_iterator(closers.end()));
