@@ -2,6 +2,7 @@
 // per piece of a cut-out pose.
 #include "line_runs.h"
 
+#include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/fill/fill_render.h>
 
 #include <algorithm>
@@ -34,6 +35,38 @@ std::vector<FillItem> restFillsLitFor(const StrokeGroup &still, const DocumentSe
     turned.lightAzimuth = std::fmod(settings.lightAzimuth + turn + 720.0, 360.0);
     std::vector<FillItem> lit = fillList(still, turned, options);
     return lit.size() == atRest.size() ? lit : atRest;
+}
+
+// A gap closer whose two ends the pose moved off a piece's motion (a closer from one toe's
+// tip to the next toe's, the foot between them not turned) is shown where its ends went: the
+// fills as posed end there, and Apply Pose keeps them so. The piece's fill moved with the
+// piece ended where the closer was, a strip of fill past the closer shown (a flamingo's foot:
+// 2 px). Per piece, the strips between each such closer as the piece's motion carries it and as
+// the pose shows it: there the piece leaves the fill to the fills as posed beneath it. A closer
+// with one end carried crosses a cut, where the fills as posed twist (the reason a piece paints
+// its own): it stays as it was. Ends that moved less than this (canvas px) are carried.
+constexpr double kCloserMoved = 0.25;
+constexpr double kOnPiece = 1.5; // px: a closer's middle this near a piece's outline bounds it
+
+QPainterPath closersMovedApart(const std::vector<QLineF> &atRest, const std::vector<QLineF> &shown,
+                               const QTransform &motion, const QPainterPath &piece)
+{
+    QPainterPath strips;
+    strips.setFillRule(Qt::WindingFill);
+    for (std::size_t i = 0; i < atRest.size() && i < shown.size(); ++i) {
+        const QLineF carried = motion.map(atRest[i]);
+        const QPointF middle = carried.center();
+        if (!piece.intersects(
+                QRectF(middle - QPointF(kOnPiece, kOnPiece), middle + QPointF(kOnPiece, kOnPiece))))
+            continue; // another piece's closer
+        const QLineF &posed = shown[i];
+        if (QLineF(carried.p1(), posed.p1()).length() <= kCloserMoved ||
+            QLineF(carried.p2(), posed.p2()).length() <= kCloserMoved)
+            continue;
+        strips.addPolygon(
+            QPolygonF{carried.p1(), carried.p2(), posed.p2(), posed.p1(), carried.p1()});
+    }
+    return strips;
 }
 
 // How far (canvas px) a cut-out piece's tones reach past its outline, over the fill beneath
@@ -189,12 +222,18 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
                     [](const std::optional<QTransform> &m) { return m.has_value(); });
     std::vector<FillItem> rest;
     StrokeGroup still;
+    std::vector<QLineF> closersAtRest, closersShown;
     if (rigid) {
         still = group;
         still.deformed.reset();
         rest = fillList(still, settings, options);
         if (rest.size() != layers[0].fills.size())
             rest.clear();
+        if (!rest.empty()) {
+            const ObjectRegionsPtr regions = objectRegions(group, settings.closeGap);
+            closersAtRest = regions->displayedClosures(still);
+            closersShown = regions->displayedClosures(group);
+        }
     }
     const std::vector<FillItem> shown = std::move(layers[0].fills);
     layers[0].fills.clear();
@@ -231,10 +270,16 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         const bool shaded = std::any_of(source.begin(), source.end(),
                                         [](const FillItem &fill) { return !fill.tones.empty(); });
         const QPainterPath toneClip = outline && shaded ? grown(*outline, kToneOverlap) : clip;
+        const QPainterPath strips =
+            moved && outline ? closersMovedApart(closersAtRest, closersShown, *motion, *outline)
+                             : QPainterPath();
         const auto place = [&](const QPainterPath &path, const QPainterPath &to) {
             QPainterPath placed = path;
             placed.setFillRule(Qt::WindingFill);
-            return outline ? placed.intersected(to) : placed;
+            if (!outline)
+                return placed;
+            placed = placed.intersected(to);
+            return strips.isEmpty() ? placed : placed.subtracted(strips);
         };
         for (std::size_t i = 0; i < source.size(); ++i) {
             const FillItem &fill = source[i];
