@@ -217,7 +217,21 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     if (!fitted) {
         ++summary.failed;
         row.insert(QStringLiteral("error"), fitted.error());
-        return print();
+        print();
+        // The sheet of a refused fit shows the two keys: what could not be laid on what.
+        if (!pngDir.isEmpty()) {
+            const QRectF view =
+                testing::shownBounds(a).united(testing::shownBounds(b)).adjusted(-8, -8, 8, 8);
+            const QTransform t = testing::pictureView(view, kCell);
+            std::vector<QImage> cells;
+            for (const StrokeGroup *key : {static_cast<const StrokeGroup *>(&a), &b}) {
+                Frame f;
+                f.groups.push_back(*key);
+                cells.push_back(cell(f, t, doc.settings()));
+            }
+            saveSheet(cells, QDir(pngDir).filePath(QStringLiteral("between_%1.png").arg(name)));
+        }
+        return;
     }
     const DrawingFit &fit = **fitted;
     const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
