@@ -28,6 +28,7 @@
 // --png DIR: per drawing DIR/between_NAME.png: A, B, A's fitted lines (red) over B (grey),
 // and the in-betweens at t = 0.25, 0.5 and 0.85 (in the cross-fade), drawn as the app draws.
 #include "../model/bake_support.h"
+#include "../model/redrawn_key.h"
 #include "bench.h"
 
 #include <finbook/deform/between/arap_interpolation.h>
@@ -52,82 +53,9 @@ using namespace finbook::model;
 
 namespace {
 
-constexpr double kTurn = 40.0;          // degrees: each limb's turn at its base
-constexpr double kSpacingFactor = 1.37; // B's point spacing against A's
-constexpr double kShortLimb = 4.0;      // px: limbs shorter than this are not compared
+constexpr double kTurn = 40.0;     // degrees: each limb's turn at its base
+constexpr double kShortLimb = 4.0; // px: limbs shorter than this are not compared
 constexpr int kCell = 300;
-
-// Points every `spacing` along a polyline, its ends kept.
-std::vector<QPointF> resampled(const std::vector<StrokePoint> &points, double spacing)
-{
-    std::vector<QPointF> out;
-    if (points.empty())
-        return out;
-    out.emplace_back(points.front().x, points.front().y);
-    double carry = 0.0;
-    for (std::size_t i = 1; i < points.size(); ++i) {
-        const QPointF a(points[i - 1].x, points[i - 1].y), b(points[i].x, points[i].y);
-        const double length = std::hypot(b.x() - a.x(), b.y() - a.y());
-        double at = spacing - carry;
-        for (; at < length; at += spacing)
-            out.push_back(a + (b - a) * (at / length));
-        carry = length - (at - spacing);
-    }
-    const QPointF last(points.back().x, points.back().y);
-    if (QLineF(out.back(), last).length() > 0.25 * spacing)
-        out.push_back(last);
-    return out;
-}
-
-double medianSpacing(const StrokeGroup &g)
-{
-    std::vector<double> d;
-    for (const Stroke &s : g.strokes)
-        for (std::size_t i = 1; i < s.data->points.size(); ++i)
-            d.push_back(std::hypot(s.data->points[i].x - s.data->points[i - 1].x,
-                                   s.data->points[i].y - s.data->points[i - 1].y));
-    return d.empty() ? 2.0 : std::max(0.5, bench::percentile(d, 0.5));
-}
-
-// B: the posed lines redrawn (see the top of the file). Deterministic per drawing.
-StrokeGroup redrawn(const StrokeGroup &posed, std::uint32_t seed)
-{
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<double> jitter(-1.0, 1.0);
-    const double spacing = kSpacingFactor * medianSpacing(posed);
-    std::vector<std::vector<QPointF>> lines;
-    for (std::size_t s = 0; s < posed.strokes.size(); ++s)
-        lines.push_back(resampled(displayedPoints(posed, s), spacing));
-    // The longest line split in two.
-    const auto longest =
-        std::max_element(lines.begin(), lines.end(),
-                         [](const auto &a, const auto &b) { return a.size() < b.size(); });
-    if (longest != lines.end() && longest->size() >= 8) {
-        const std::size_t half = longest->size() / 2;
-        std::vector<QPointF> second(longest->begin() + std::ptrdiff_t(half), longest->end());
-        longest->resize(half + 1);
-        lines.push_back(std::move(second));
-    }
-    for (std::size_t i = 0; i < lines.size(); ++i)
-        if (i % 2 == 1)
-            std::reverse(lines[i].begin(), lines[i].end());
-    std::shuffle(lines.begin(), lines.end(), random);
-    StrokeGroup b;
-    b.id = 900000;
-    b.name = QStringLiteral("B");
-    Id next = 900001;
-    for (const std::vector<QPointF> &line : lines) {
-        if (line.size() < 2)
-            continue;
-        auto data = std::make_shared<StrokeData>();
-        data->width = testing::kDrawingPenWidth;
-        for (const QPointF &p : line)
-            data->points.push_back(
-                {float(p.x() + jitter(random)), float(p.y() + jitter(random)), 1.0f});
-        b.strokes.push_back(Stroke{next++, std::move(data)});
-    }
-    return b;
-}
 
 QImage cell(const Frame &frame, const QTransform &t, const DocumentSettings &settings,
             const StrokeGroup *under = nullptr)
@@ -211,7 +139,7 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
         return print();
     }
     const StrokeGroup &posed = *doc.group(g);
-    const StrokeGroup b = redrawn(posed, std::uint32_t(qHash(name)));
+    const StrokeGroup b = testing::redrawnKey(posed, std::uint32_t(qHash(name)));
     ++summary.drawings;
     const auto fitted = fitDrawings(a, b, closeGap, {}, options);
     if (!fitted) {

@@ -3,9 +3,11 @@
 // turned — resampled, its lines split, reversed and shuffled. The fit finds where A went; the
 // in-betweens start on A's lines, land on B's, keep the arm's length, and go in as one undo step.
 #include "bake_support.h"
+#include "redrawn_key.h"
 #include "stroke_support.h"
 
 #include <finbook/deform/between/arap_interpolation.h>
+#include <finbook/geometry/embedding.h>
 #include <finbook/model/commands.h>
 #include <finbook/model/document.h>
 #include <finbook/model/fill/fill_commands.h>
@@ -246,6 +248,7 @@ private slots:
     void anArmDrawnOverTheBodyTurnsAsAPiece();
     void aBodyDrawnOpenUnderAnArmStaysClosed();
     void aBodyClosedByAPartStaysClosedAsThePartTurns();
+    void aKeyTheAxesTurnOverIsFoundUpright();
     void inbetweensStartOnAAndLandOnB();
     void generatedInbetweensAreOneUndoStep();
 };
@@ -744,6 +747,54 @@ void TestBetweenDrawings::aBodyClosedByAPartStaysClosedAsThePartTurns()
         QVERIFY(tailFace >= 0 && tailFace != body && shows[std::size_t(tailFace)] >= 0);
         QVERIFY(mid.fills[std::size_t(shows[std::size_t(tailFace)])].color != bodyColour);
     }
+}
+
+void TestBetweenDrawings::aKeyTheAxesTurnOverIsFoundUpright()
+{
+    // tests/data/quickdraw_octopus_5005193466871808.json, posed by its automatic skeleton (each
+    // limb turned 40° where it leaves the body, as finbook-bench between makes key B): one arm
+    // swung down beside a leg, the other up. B's principal axes turn A half round, and the fit
+    // from there (rigid ICP, the skeleton's starts) stayed upside down and was refused ("its
+    // lines ... have nothing of the first key on them"). A sweep of turns finds it upright.
+    QString error;
+    const auto lines = testing::readDrawing(
+        QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/quickdraw_octopus_5005193466871808.json"),
+        &error);
+    QVERIFY2(!lines.empty(), qPrintable(error));
+    Document doc;
+    const Id g = testing::drawingDocument(doc, lines);
+    const StrokeGroup a = *doc.group(g);
+    const double closeGap = doc.settings().closeGap;
+    const Rig rig = testing::skeletonBend(a, closeGap, SkinningMode::Rigid, 40.0);
+    QVERIFY(!rig.empty());
+    QCOMPARE(testing::poseObject(doc, g, rig), QString());
+    const StrokeGroup posed = *doc.group(g);
+    QVERIFY(posed.isDeformed());
+    // Key B: the posed lines redrawn, as the bench makes it (resampled, jittered, reversed,
+    // shuffled, split), with the bench's seed for this drawing.
+    const StrokeGroup b = testing::redrawnKey(
+        posed, std::uint32_t(qHash(QStringLiteral("quickdraw_octopus_5005193466871808"))));
+    const auto made = fitDrawings(a, b, closeGap);
+    QVERIFY2(made, made ? "" : qPrintable(made.error()));
+    const DrawingFit &fit = **made;
+    // Each of A's points lands where the pose took it: median within 2 % of A's diagonal.
+    const Eigen::MatrixX2d fitted =
+        geometry::applyEmbedding(fit.meshed->embedding, fit.fit.U, fit.meshed->mesh.F);
+    const QRectF box = testing::shownBounds(a);
+    const double diagonal = std::hypot(box.width(), box.height());
+    std::vector<double> errors;
+    for (std::size_t s = 0; s < a.strokes.size(); ++s)
+        for (std::size_t k = 0; k < posed.deformed->strokes[s].size(); ++k) {
+            const StrokePoint &truth = posed.deformed->strokes[s][k];
+            const Eigen::Index r = Eigen::Index(fit.meshed->strokeOffsets[s] + k);
+            errors.push_back(std::hypot(fitted(r, 0) - truth.x, fitted(r, 1) - truth.y));
+        }
+    QVERIFY(!errors.empty());
+    std::nth_element(errors.begin(), errors.begin() + std::ptrdiff_t(errors.size() / 2),
+                     errors.end());
+    const double median = errors[errors.size() / 2];
+    QVERIFY2(median <= 0.02 * diagonal,
+             qPrintable(QStringLiteral("%1 of %2").arg(median).arg(diagonal)));
 }
 
 void TestBetweenDrawings::inbetweensStartOnAAndLandOnB()

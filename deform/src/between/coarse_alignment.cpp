@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <optional>
 
 namespace finbook::deform::between::detail {
 namespace {
@@ -14,6 +16,16 @@ constexpr double kChamferTie = 1e-6;
 // Pairs are never dropped for being closer than this fraction of the target's diagonal (a
 // near-perfect fit has a median pair distance of ~0, and 3 × 0 would drop everything).
 constexpr double kRejectFloor = 0.05;
+// The turns' sweep (turnSwept): this many turns round a full one, rigid ICP of this many of
+// A's samples for at most this many steps from each, placements that turn A more than this
+// (rad) left out (keys are drawn upright: a drawing turned upside down lay closer on an
+// octopus's tentacles than the right one, and spun through its in-betweens), and a margin by
+// which the best must lie closer than the start's (symmetric chamfer).
+constexpr int kSweepSteps = 12;
+constexpr Eigen::Index kSweepSamples = 200;
+constexpr int kSweepIterations = 15;
+constexpr double kSweepMostTurn = 0.5 * std::numbers::pi;
+constexpr double kSweepMargin = 0.1;
 
 struct Moments {
     Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
@@ -200,6 +212,73 @@ Pairs findPairs(const RigidFitSource &source, const RigidFitTarget &target,
         keep(from, share);
     }
     return pairs;
+}
+
+std::optional<Similarity> turnSwept(const RigidFitSource &source, const RigidFitTarget &target,
+                                    const RigidFitOptions &options, const Similarity &start,
+                                    const Similarity &fromStart)
+{
+    const Eigen::Index n = source.rest.rows();
+    if (n == 0 || target.P.rows() == 0 || kSweepSteps <= 1)
+        return std::nullopt;
+    // The sweep's ICP runs on a few of A's samples, evenly taken.
+    const Eigen::Index m = std::min<Eigen::Index>(n, kSweepSamples);
+    Eigen::MatrixX2d points(m, 2), normals(m, 2);
+    for (Eigen::Index i = 0; i < m; ++i) {
+        points.row(i) = source.rest.row(i * n / m);
+        normals.row(i) = source.N.row(i * n / m);
+    }
+    const auto icp = [&](Similarity s) {
+        for (int iteration = 0; iteration < kSweepIterations; ++iteration) {
+            const Eigen::MatrixX2d X = s.apply(points);
+            const Eigen::Matrix2d turn = rotation(angleOf(s.linear));
+            Eigen::MatrixX2d to = X;
+            Eigen::VectorXd w = Eigen::VectorXd::Zero(m);
+            for (Eigen::Index i = 0; i < m; ++i) {
+                double d = 0.0;
+                const int j =
+                    target.grid.nearest(X.row(i).transpose(), turn * normals.row(i).transpose(),
+                                        options.normalAgreement, d);
+                if (j >= 0) {
+                    to.row(i) = target.P.row(j);
+                    w(i) = 1.0;
+                }
+            }
+            const Similarity next = procrustes(points, to, w, options.allowScale);
+            const double moved = (next.apply(points) - X).rowwise().norm().maxCoeff();
+            s = next;
+            if (moved <= 1e-3 * std::max(target.diagonal, 1e-12))
+                break;
+        }
+        return s;
+    };
+    const Eigen::Vector2d a = source.rest.colwise().mean().transpose(),
+                          b = target.P.colwise().mean().transpose();
+    double bestChamfer = symmetricChamfer(icp(fromStart).apply(points), target);
+    const double startChamfer = bestChamfer;
+    std::optional<Similarity> bestStart;
+    for (int k = 1; k < kSweepSteps; ++k) {
+        Similarity s;
+        s.linear = rotation(2.0 * std::numbers::pi * k / kSweepSteps) * start.linear;
+        s.translation = b - s.linear * a;
+        const Similarity placed = icp(s);
+        if (std::abs(angleOf(placed.linear)) > kSweepMostTurn)
+            continue;
+        const double c = symmetricChamfer(placed.apply(points), target);
+        if (c < bestChamfer && c < (1.0 - kSweepMargin) * startChamfer) {
+            bestStart = s;
+            bestChamfer = c;
+        }
+    }
+    if (!bestStart)
+        return std::nullopt;
+    const FitPins none;
+    const Similarity placed = rigidIcp(source, target, none, options, *bestStart);
+    if (std::abs(angleOf(placed.linear)) > kSweepMostTurn ||
+        symmetricChamfer(placed.apply(source.rest), target) >=
+            (1.0 - kSweepMargin) * symmetricChamfer(fromStart.apply(source.rest), target))
+        return std::nullopt;
+    return placed;
 }
 
 Similarity rigidIcp(const RigidFitSource &source, const RigidFitTarget &target, const FitPins &pins,

@@ -285,7 +285,7 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
     };
     using detail::ArticulatedStart;
     // The starts' first stages are run side by side (each has its own system and scratch; the
-    // source and target are only read): on two cores the four take about the time of two.
+    // source and target are only read): on two cores the four (five) take about the time of two.
     // Then the two that lie closest after it are relaxed, side by side, and the better kept:
     // the stiff stage already shows which starts put A's parts on the right lines of B, and
     // the relaxed stages cost as much again as the stiff one.
@@ -301,6 +301,13 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
             return begin(detail::rigidIcp(source, target, pins, options, unturned),
                          ArticulatedStart::Subtrees);
         }));
+    // And from the turn a sweep finds (detail::turnSwept), when the moments' turn lies far.
+    const std::optional<detail::Similarity> swept =
+        pins.targets.rows() == 0 ? detail::turnSwept(source, target, options, start, rigid)
+                                 : std::nullopt;
+    if (swept)
+        others.push_back(std::async(std::launch::async,
+                                    [&] { return begin(*swept, ArticulatedStart::Subtrees); }));
     std::vector<Run> runs;
     runs.push_back(begin(rigid, std::nullopt));
     for (std::future<Run> &other : others)
@@ -309,7 +316,7 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
     for (const Run &run : runs)
         iterations += run.fit.iterations;
     // Closest first. Scores within kTie of the best are a tie, kept in the starts' order
-    // (plain, subtrees, body first, unturned): a symmetric shape lies as close with a part
+    // (plain, subtrees, body first, unturned, swept): a symmetric shape lies as close with a part
     // turned over as without, and only the plainer start has it the right way round.
     double closest = std::numeric_limits<double>::infinity();
     for (const Run &run : runs)

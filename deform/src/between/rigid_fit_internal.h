@@ -11,6 +11,7 @@
 
 #include <array>
 #include <complex>
+#include <optional>
 #include <vector>
 
 namespace finbook::deform::between {
@@ -84,6 +85,15 @@ Similarity coarseAlignment(const RigidFitSource &source, const RigidFitTarget &t
                            Similarity *unturned = nullptr);
 Similarity rigidIcp(const RigidFitSource &source, const RigidFitTarget &target, const FitPins &pins,
                     const RigidFitOptions &options, Similarity start);
+
+// One more start for rigidFit: rigid ICP (of a few of A's samples) from `start` turned by each
+// twelfth of a full turn about the centroids, and the placement whose lines lie closest
+// (symmetric chamfer), when it lies closer than fromStart (rigid ICP from start itself) by a
+// clear margin and turns A by at most a quarter turn. The moments' axes can turn a drawing
+// whose limbs B poses otherwise by half a turn, and rigid ICP from there stays upside down.
+std::optional<Similarity> turnSwept(const RigidFitSource &source, const RigidFitTarget &target,
+                                    const RigidFitOptions &options, const Similarity &start,
+                                    const Similarity &fromStart);
 
 // The articulated coarse step (rigidFit with a FitSkeleton): the n×2 vertices to start the
 // ARAP stages from, `global` applied and then each bone's part turned about its base joint,
