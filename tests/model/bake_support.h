@@ -198,6 +198,16 @@ inline std::vector<std::vector<QPointF>> readDrawing(const QString &path, QStrin
     return lines;
 }
 
+// A line drawn as the bench draws them: pen kDrawingPenWidth, full pressure.
+inline std::shared_ptr<model::StrokeData> drawnLine(const std::vector<QPointF> &line)
+{
+    auto data = std::make_shared<model::StrokeData>();
+    data->width = kDrawingPenWidth;
+    for (const QPointF &p : line)
+        data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+    return data;
+}
+
 // A document of one frame whose one object holds the drawing, every region filled, each fill
 // in its own colour. Returns the object's id (kNoId when nothing could be drawn). Pen 3 px, as the
 // bench draws them.
@@ -207,13 +217,8 @@ inline model::Id drawingDocument(model::Document &doc,
     doc.undoStack()->push(new model::InsertFrameCommand(&doc, 0));
     const model::Id g = doc.frameAt(0).groups.at(0).id;
     for (const std::vector<QPointF> &line : lines) {
-        if (line.size() < 2)
-            continue;
-        auto data = std::make_shared<model::StrokeData>();
-        data->width = kDrawingPenWidth;
-        for (const QPointF &p : line)
-            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-        doc.undoStack()->push(new model::AddStrokeCommand(&doc, g, std::move(data)));
+        if (line.size() >= 2)
+            doc.undoStack()->push(new model::AddStrokeCommand(&doc, g, drawnLine(line)));
     }
     if (auto all = model::fillAllRegionsCommand(&doc, g, 0xff808080))
         doc.undoStack()->push(all.release());

@@ -96,12 +96,12 @@ inline model::StrokeGroup redrawnKey(const model::StrokeGroup &posed, std::uint3
     for (const std::vector<QPointF> &line : lines) {
         if (line.size() < 2)
             continue;
-        auto data = std::make_shared<model::StrokeData>();
-        data->width = kDrawingPenWidth;
-        for (const QPointF &p : line)
-            data->points.push_back(
-                {float(p.x() + jitter(random)), float(p.y() + jitter(random)), 1.0f});
-        b.strokes.push_back(model::Stroke{next++, std::move(data)});
+        std::vector<QPointF> jittered;
+        for (const QPointF &p : line) {
+            const double dx = jitter(random), dy = jitter(random);
+            jittered.emplace_back(p.x() + dx, p.y() + dy);
+        }
+        b.strokes.push_back(model::Stroke{next++, drawnLine(jittered)});
     }
     return b;
 }
