@@ -219,7 +219,7 @@ std::optional<Similarity> turnSwept(const RigidFitSource &source, const RigidFit
                                     const Similarity &fromStart)
 {
     const Eigen::Index n = source.rest.rows();
-    if (n == 0 || target.P.rows() == 0 || kSweepSteps <= 1)
+    if (n == 0 || target.P.rows() == 0)
         return std::nullopt;
     // The sweep's ICP runs on a few of A's samples, evenly taken.
     const Eigen::Index m = std::min<Eigen::Index>(n, kSweepSamples);

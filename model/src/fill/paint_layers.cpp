@@ -53,16 +53,18 @@ QPainterPath closersMovedApart(const std::vector<QLineF> &atRest, const std::vec
 {
     QPainterPath strips;
     strips.setFillRule(Qt::WindingFill);
+    const QRectF near = piece.boundingRect().adjusted(-kOnPiece, -kOnPiece, kOnPiece, kOnPiece);
     for (std::size_t i = 0; i < atRest.size() && i < shown.size(); ++i) {
         const QLineF carried = motion.map(atRest[i]);
-        const QPointF middle = carried.center();
-        if (!piece.intersects(
-                QRectF(middle - QPointF(kOnPiece, kOnPiece), middle + QPointF(kOnPiece, kOnPiece))))
-            continue; // another piece's closer
         const QLineF &posed = shown[i];
         if (QLineF(carried.p1(), posed.p1()).length() <= kCloserMoved ||
             QLineF(carried.p2(), posed.p2()).length() <= kCloserMoved)
             continue;
+        const QPointF middle = carried.center();
+        if (!near.contains(middle) ||
+            !piece.intersects(
+                QRectF(middle - QPointF(kOnPiece, kOnPiece), middle + QPointF(kOnPiece, kOnPiece))))
+            continue; // another piece's closer
         strips.addPolygon(
             QPolygonF{carried.p1(), carried.p2(), posed.p2(), posed.p1(), carried.p1()});
     }
