@@ -20,19 +20,6 @@ double segmentPointT(const Eigen::Vector2d &p, const Eigen::Vector2d &a, const E
     return l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
 }
 
-// The distance between the outer outlines of two polygons, vertex to edge both ways (the
-// pieces of one region never cross, so no crossing test is needed).
-double outlineDistance(const Polygon &a, const Polygon &b)
-{
-    const ContourIndex toA(Polygon{a.outer, {}}), toB(Polygon{b.outer, {}});
-    double best = std::numeric_limits<double>::infinity();
-    for (Eigen::Index i = 0; i < a.outer.rows(); ++i)
-        best = std::min(best, toB.distance(a.outer.row(i).transpose()));
-    for (Eigen::Index i = 0; i < b.outer.rows(); ++i)
-        best = std::min(best, toA.distance(b.outer.row(i).transpose()));
-    return best;
-}
-
 // Per polygon of `contour`, its widest inscribed radius where its bones run: the joints' radii,
 // and the clearance sampled along each bone of that polygon (an ellipse's medial axis has
 // joints only at its ends, where the radius is a fraction of the middle's: a cow's body drawn
@@ -68,30 +55,8 @@ std::vector<double> widestRadii(const JointGraph &graph, const std::vector<int> 
     return widest;
 }
 
-// Whether the piece (polygon) of `child` touches or nearly touches a polygon of the attached
-// joints: their outlines within kPieceReach of the thicker piece's widest radius (widestRadii).
-bool nearlyTouches(const JointGraph &graph, const std::vector<int> &polygonOf,
-                   const std::vector<char> &attached, int child, const Region &contour,
-                   const std::vector<double> &widest)
-{
-    const int piece = polygonOf[std::size_t(child)];
-    if (piece < 0 || std::size_t(piece) >= contour.size())
-        return true; // no outline to measure: as before, joined
-    std::vector<char> reached(contour.size(), 0);
-    for (int j = 0; j < graph.size(); ++j) {
-        const int p = polygonOf[std::size_t(j)];
-        if (p >= 0 && std::size_t(p) < contour.size())
-            reached[std::size_t(p)] |= attached[std::size_t(j)];
-    }
-    for (std::size_t p = 0; p < contour.size(); ++p)
-        if (reached[p] && int(p) != piece &&
-            outlineDistance(contour[std::size_t(piece)], contour[p]) <=
-                kPieceReach * std::max(widest[std::size_t(piece)], widest[p]))
-            return true;
-    return false;
-}
-
-// Where two pieces' outer outlines come closest: a point on each (vertex to edge, both ways).
+// Where two pieces' outer outlines come closest: a point on each (vertex to edge, both ways;
+// the pieces of one region never cross, so no crossing test is needed).
 struct Contact {
     Eigen::Vector2d onChild = Eigen::Vector2d::Zero(), onParent = Eigen::Vector2d::Zero();
     double distance = std::numeric_limits<double>::infinity();
@@ -123,6 +88,37 @@ Contact closestContact(const Polygon &child, const Polygon &parent)
     return out;
 }
 
+// The contact of `piece` (a polygon of `contour`) with each piece that has an attached joint
+// (distance +inf for the others and for itself): measured once per join, for nearlyTouches and
+// aimAtContact.
+std::vector<Contact> contactsWithAttached(const std::vector<int> &polygonOf,
+                                          const std::vector<char> &attached, int piece,
+                                          const Region &contour)
+{
+    std::vector<Contact> out(contour.size());
+    std::vector<char> reached(contour.size(), 0);
+    for (std::size_t j = 0; j < polygonOf.size(); ++j) {
+        const int p = polygonOf[j];
+        if (attached[j] && p >= 0 && std::size_t(p) < contour.size())
+            reached[std::size_t(p)] = 1;
+    }
+    for (std::size_t p = 0; p < contour.size(); ++p)
+        if (reached[p] && int(p) != piece)
+            out[p] = closestContact(contour[std::size_t(piece)], contour[p]);
+    return out;
+}
+
+// Whether `piece` touches or nearly touches a piece with an attached joint: their outlines
+// within kPieceReach of the thicker piece's widest radius (widestRadii).
+bool nearlyTouches(const std::vector<Contact> &contacts, int piece,
+                   const std::vector<double> &widest)
+{
+    for (std::size_t p = 0; p < contacts.size(); ++p)
+        if (contacts[p].distance <= kPieceReach * std::max(widest[std::size_t(piece)], widest[p]))
+            return true;
+    return false;
+}
+
 } // namespace
 
 int thickestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, int polygon)
@@ -151,15 +147,12 @@ namespace {
 // its body each hang from the body's bone above them, not one from the next along the belly
 // (a bone through the air between them), and a tree's trunk line from the crown it meets.
 // `child` becomes the joint of its tree nearest that contact, and from–to (at bestT) the bone
-// of the attached piece it comes closest to nearest the contact there. Left as it is when the
-// pieces' outlines cannot say (no polygon, no joint of that piece attached).
+// of the attached piece it comes closest to nearest the contact there. Left as it is when no
+// attached piece's outline was measured (contacts: contactsWithAttached).
 void aimAtContact(const JointGraph &graph, const std::vector<int> &polygonOf,
-                  const std::vector<char> &attached, const Region &contour, int &child, int &from,
-                  int &to, double &bestT)
+                  const std::vector<char> &attached, const std::vector<Contact> &contacts,
+                  int &child, int &from, int &to, double &bestT)
 {
-    const int piece = polygonOf[std::size_t(child)];
-    if (piece < 0 || std::size_t(piece) >= contour.size())
-        return;
     // The child's tree (its free joints connected to it).
     std::vector<char> inTree(std::size_t(graph.size()), 0);
     std::vector<int> stack{child}, tree;
@@ -175,23 +168,13 @@ void aimAtContact(const JointGraph &graph, const std::vector<int> &polygonOf,
             }
     }
     // The attached piece whose outline comes closest.
-    std::vector<char> reached(contour.size(), 0);
-    for (int j = 0; j < graph.size(); ++j) {
-        const int p = polygonOf[std::size_t(j)];
-        if (attached[std::size_t(j)] && p >= 0 && std::size_t(p) < contour.size())
-            reached[std::size_t(p)] = 1;
-    }
     Contact best;
     int parentPiece = -1;
-    for (std::size_t p = 0; p < contour.size(); ++p) {
-        if (!reached[p] || int(p) == piece)
-            continue;
-        const Contact c = closestContact(contour[std::size_t(piece)], contour[p]);
-        if (c.distance < best.distance) {
-            best = c;
+    for (std::size_t p = 0; p < contacts.size(); ++p)
+        if (contacts[p].distance < best.distance) {
+            best = contacts[p];
             parentPiece = int(p);
         }
-    }
     if (parentPiece < 0)
         return;
     // The bone (or lone joint) of that piece nearest the contact on its side.
@@ -300,9 +283,16 @@ void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root, const 
         }
         if (child < 0)
             return;
-        const bool near = nearlyTouches(graph, polygonOf, attached, child, contour, widest);
-        if (near)
-            aimAtContact(graph, polygonOf, attached, contour, child, from, to, bestT);
+        // A piece without an outline to measure is joined, as before, where it is nearest.
+        const int piece = polygonOf[std::size_t(child)];
+        bool near = true;
+        if (piece >= 0 && std::size_t(piece) < contour.size()) {
+            const std::vector<Contact> contacts =
+                contactsWithAttached(polygonOf, attached, piece, contour);
+            near = nearlyTouches(contacts, piece, widest);
+            if (near)
+                aimAtContact(graph, polygonOf, attached, contacts, child, from, to, bestT);
+        }
         attachTree(child);
         if (!near)
             continue; // a tree of its own; the pieces near it hang from it
